@@ -1,0 +1,55 @@
+#include "app/cli.h"
+
+#include <CLI/CLI.hpp>
+
+#include <ostream>
+
+#include "app/inspect_command.h"
+#include "planner/util/input_error.h"
+
+namespace stanceplan::app {
+namespace {
+
+void add_inspect(CLI::App& cli, InspectOptions& options) {
+  CLI::App* cmd = cli.add_subcommand("inspect", "Describe a URDF model: kind, joints, limits, mass, "
+                                                "links, contact surfaces, collision geometry");
+  cmd->add_option("model", options.urdf, "URDF file")->required();
+  cmd->add_option("--surfaces", options.surfaces, "surface file (stanceplan/surfaces@1 YAML)");
+  cmd->add_option("--srdf", options.srdf, "SRDF file with disabled collision pairs");
+  cmd->add_option("--package-path", options.package_paths,
+                  "directory searched for package:// URIs (repeatable; ROS_PACKAGE_PATH is "
+                  "searched after these)");
+  cmd->add_option("--kind", options.kind,
+                  "entity kind: fixed | floating | object | environment (default: object for a "
+                  "one-link model, fixed otherwise)")
+      ->check(CLI::IsMember({"auto", "fixed", "floating", "object", "environment"}));
+  cmd->add_flag("--json", options.json, "print one JSON object");
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App cli{"stanceplan: multi-contact stance planning (Bouyarmane & Kheddar 2012).\n"
+               "Exit codes: 0 success, 1 bad input or usage, 2 no plan found / check failed."};
+  cli.require_subcommand(1);
+  InspectOptions inspect;
+  add_inspect(cli, inspect);
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    out << cli.help();
+    return kExitSuccess;
+  } catch (const CLI::ParseError& e) {
+    err << "stanceplan: " << e.what() << "\n" << "Run 'stanceplan --help' for usage.\n";
+    return kExitBadInput;
+  }
+  try {
+    if (cli.got_subcommand("inspect")) return run_inspect(inspect, out, err);
+  } catch (const InputError& e) {
+    err << "stanceplan: error: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  return kExitBadInput;
+}
+
+}  // namespace stanceplan::app

@@ -1,0 +1,136 @@
+#include "app/inspect_command.h"
+
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "planner/contact/surface_file.h"
+#include "planner/model/entity.h"
+#include "planner/model/urdf_loader.h"
+
+namespace stanceplan::app {
+namespace {
+
+using nlohmann::json;
+
+const char* joint_type_name(JointType type) {
+  switch (type) {
+    case JointType::Fixed: return "fixed";
+    case JointType::Revolute: return "revolute";
+    case JointType::Continuous: return "continuous";
+    case JointType::Prismatic: return "prismatic";
+  }
+  return "?";
+}
+
+const char* shape_name(ShapeType type) {
+  switch (type) {
+    case ShapeType::Box: return "box";
+    case ShapeType::Cylinder: return "cylinder";
+    case ShapeType::Sphere: return "sphere";
+    case ShapeType::Mesh: return "mesh";
+  }
+  return "?";
+}
+
+EntityKind decide_kind(const InspectOptions& options, const Model& model) {
+  EntityKind kind = EntityKind::FixedRobot;
+  if (options.kind == "auto") return model.num_links() == 1 ? EntityKind::Object : kind;
+  parse_entity_kind(options.kind, &kind);  // validated by the CLI
+  return kind;
+}
+
+json vector_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json describe(const Model& model, EntityKind kind, const std::vector<Surface>& surfaces) {
+  json out;
+  out["name"] = model.name;
+  out["file"] = model.source_file;
+  out["kind"] = to_string(kind);
+  out["floating"] = kind == EntityKind::FloatingRobot || kind == EntityKind::Object;
+  out["dof"] = model.num_dofs();
+  out["mass"] = model.total_mass;
+  json joints = json::array();
+  for (const Joint& joint : model.joints) {
+    if (!joint.movable()) continue;
+    json j = {{"name", joint.name}, {"type", joint_type_name(joint.type)},
+              {"lower", joint.has_position_limits ? json(joint.lower) : json(nullptr)},
+              {"upper", joint.has_position_limits ? json(joint.upper) : json(nullptr)},
+              {"effort", joint.effort}, {"velocity", joint.velocity},
+              {"axis", vector_json(joint.axis)}};
+    if (joint.is_mimic)
+      j["mimic"] = {{"joint", joint.mimic_source}, {"multiplier", joint.multiplier},
+                    {"offset", joint.offset}};
+    joints.push_back(j);
+  }
+  out["joints"] = joints;
+  json links = json::array();
+  for (const Link& link : model.links) {
+    json collisions = json::array();
+    for (const LinkGeometry& g : link.collisions) collisions.push_back(shape_name(g.shape.type));
+    links.push_back({{"name", link.name},
+                     {"parent", link.parent_link < 0 ? json(nullptr) : json(model.links[link.parent_link].name)},
+                     {"mass", link.inertial.mass}, {"collision", collisions},
+                     {"visuals", link.visuals.size()}});
+  }
+  out["links"] = links;
+  json surface_list = json::array();
+  for (const Surface& s : surfaces) {
+    json vertices = json::array();
+    for (const auto& v : s.vertices_L()) vertices.push_back(vector_json(v));
+    surface_list.push_back({{"name", s.name}, {"link", s.link_name},
+                            {"normal", vector_json(s.normal_L())}, {"area", s.area()},
+                            {"vertices", vertices}});
+  }
+  out["surfaces"] = surface_list;
+  out["warnings"] = model.load_warnings;
+  return out;
+}
+
+void print_text(const json& d, std::ostream& out) {
+  out << "model " << d["name"].get<std::string>() << "  (" << d["file"].get<std::string>() << ")\n";
+  out << "kind: " << d["kind"].get<std::string>() << "   actuated dofs: " << d["dof"]
+      << "   mass: " << std::fixed << std::setprecision(4) << d["mass"].get<double>() << " kg"
+      << "   links: " << d["links"].size() << "\n";
+  out << "joints (movable):\n";
+  for (const json& j : d["joints"]) {
+    out << "  " << std::left << std::setw(28) << j["name"].get<std::string>() << std::setw(11)
+        << j["type"].get<std::string>() << std::right << std::setprecision(3);
+    if (j["lower"].is_null())
+      out << "        unbounded";
+    else
+      out << std::setw(8) << j["lower"].get<double>() << " .. " << std::setw(6) << j["upper"].get<double>();
+    out << "   effort " << std::setw(7) << std::setprecision(1) << j["effort"].get<double>();
+    if (j.contains("mimic")) out << "   mimics " << j["mimic"]["joint"].get<std::string>();
+    out << "\n";
+  }
+  size_t geometries = 0;
+  for (const json& l : d["links"]) geometries += l["collision"].size();
+  out << "collision geometries: " << geometries << "\n";
+  out << "surfaces: " << d["surfaces"].size() << "\n";
+  for (const json& s : d["surfaces"])
+    out << "  " << std::left << std::setw(16) << s["name"].get<std::string>() << " on "
+        << std::setw(20) << s["link"].get<std::string>() << std::right << s["vertices"].size()
+        << " vertices, " << std::setprecision(4) << s["area"].get<double>() << " m^2\n";
+  for (const json& w : d["warnings"]) out << "warning: " << w.get<std::string>() << "\n";
+}
+
+}  // namespace
+
+int run_inspect(const InspectOptions& options, std::ostream& out, std::ostream& err) {
+  UrdfOptions urdf_options;
+  urdf_options.packages.directories = options.package_paths;
+  const Model model = load_urdf(options.urdf, urdf_options);
+  std::vector<Surface> surfaces;
+  if (!options.surfaces.empty()) surfaces = load_surface_file(options.surfaces, model);
+  const json description = describe(model, decide_kind(options, model), surfaces);
+  if (options.json)
+    out << description.dump(2) << "\n";
+  else
+    print_text(description, out);
+  if (options.json)
+    for (const std::string& w : model.load_warnings) err << "warning: " << w << "\n";
+  return 0;
+}
+
+}  // namespace stanceplan::app

@@ -1,0 +1,11 @@
+# Every external package, found the way ../shared/design/DEPENDENCIES.md documents for Debian 12.
+find_package(PkgConfig REQUIRED)
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
+find_package(fcl 0.7 REQUIRED)        # the CMake config, not fcl.pc (which forces -std=c++11)
+find_package(urdfdom REQUIRED)
+find_package(assimp REQUIRED)
+find_package(yaml-cpp REQUIRED)       # target `yaml-cpp` (0.7 has no namespaced target)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(tinyxml2 QUIET)

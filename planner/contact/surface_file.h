@@ -1,0 +1,38 @@
+#pragma once
+// The per-model surface sidecar file (YAML). Format `stanceplan/surfaces@1`:
+//
+//   format: stanceplan/surfaces@1
+//   surfaces:
+//     - name: l_sole                       # unique in the file
+//       link: l_ankle_roll                 # a link of the model
+//       normal: [0, 0, -1]                 # outward normal, link frame
+//       vertices: [[0.12, 0.06, -0.1], [0.12, -0.06, -0.1], ...]   # link frame, m,
+//                                          # counter-clockwise seen from outside (about normal)
+//       x_axis: [1, 0, 0]                  # optional: surface x axis (projected on the plane)
+//     - name: seat
+//       link: chair
+//       box_face: +z                       # derive from the link's box collision geometry:
+//                                          # one of +x -x +y -y +z -z
+//       box_index: 0                       # optional: which box of the link (default 0)
+//       inset: 0.01                        # optional: shrink the face by this margin (m)
+//
+// Errors name the file, the line, the surface and the fault, e.g.
+//   "humanoid.surfaces.yaml:12: surface "l_palm": link "l_hand" is not in model "humanoid"".
+#include <string>
+#include <vector>
+
+#include "planner/contact/surface.h"
+#include "planner/model/model.h"
+
+namespace stanceplan {
+
+// Throws InputError on any fault.
+std::vector<Surface> load_surface_file(const std::string& path, const Model& model);
+
+// One face ("+x" ... "-z", in the box's own frame) of box `box_index` among the link's
+// collision boxes, shrunk by `inset`, as a surface named `name` with its normal pointing out of the
+// box. Throws InputError when the link has no such box or the face name is unknown.
+Surface surface_from_box_face(const Model& model, int link, int box_index, const std::string& face,
+                              double inset, const std::string& name);
+
+}  // namespace stanceplan
