@@ -113,14 +113,20 @@ bool make_surface(const std::string& name, int link, const std::string& link_nam
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   for (const auto& v : vertices_L) center += v;
   center /= static_cast<double>(vertices_L.size());
+  int worst = 0;
+  double worst_offset = 0.0;
   for (size_t i = 0; i < vertices_L.size(); ++i) {
     const double off = (vertices_L[i] - center).dot(z);
-    if (std::abs(off) > plane_tolerance) {
-      *error = "not planar: " + vertex_label(static_cast<int>(i)) + " is " + std::to_string(off) +
-               " m off the plane through the vertex centroid normal to the given normal "
-               "(tolerance " + std::to_string(plane_tolerance) + " m)";
-      return false;
+    if (std::abs(off) > std::abs(worst_offset)) {
+      worst = static_cast<int>(i);
+      worst_offset = off;
     }
+  }
+  if (std::abs(worst_offset) > plane_tolerance) {
+    *error = "not planar: " + vertex_label(worst) + " is " + std::to_string(worst_offset) +
+             " m off the plane through the vertex centroid normal to the given normal "
+             "(tolerance " + std::to_string(plane_tolerance) + " m)";
+    return false;
   }
   Eigen::Vector3d x = default_x_axis(z);
   if (x_axis_L) {

@@ -1,0 +1,92 @@
+// `stanceplan inspect` on the real robots, its JSON fields, and its exit codes on bad input.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/cli.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan {
+namespace {
+
+using ::testing::HasSubstr;
+
+struct CliResult {
+  int code;
+  std::string out, err;
+};
+
+CliResult run(std::vector<std::string> args) {
+  args.insert(args.begin(), "stanceplan");
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int code = app::run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {code, out.str(), err.str()};
+}
+
+TEST(Inspect, TalosJson) {
+  const CliResult r = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
+                           "--kind", "floating", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto d = nlohmann::json::parse(r.out);
+  EXPECT_EQ(d["name"], "talos");
+  EXPECT_EQ(d["dof"], 32);
+  EXPECT_NEAR(d["mass"].get<double>(), 90.2722, 1e-3);
+  EXPECT_EQ(d["floating"], true);
+  ASSERT_EQ(d["joints"].size(), 32u);
+  for (const auto& j : d["joints"]) {
+    for (const char* key : {"name", "type", "lower", "upper", "effort"}) EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_GT(j["effort"].get<double>(), 0.0) << j["name"];
+  }
+  EXPECT_EQ(d["links"].size(), 60u);
+  EXPECT_TRUE(d["surfaces"].empty());
+}
+
+TEST(Inspect, PandaJsonListsPrismaticAndMimicJoints) {
+  const CliResult r = run({"inspect", test::panda_urdf(), "--package-path", test::panda_package_dir(), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto d = nlohmann::json::parse(r.out);
+  EXPECT_EQ(d["dof"], 8);
+  EXPECT_EQ(d["floating"], false);
+  EXPECT_EQ(d["kind"], "fixed");
+  const auto& joints = d["joints"];
+  ASSERT_EQ(joints.size(), 9u);
+  EXPECT_EQ(joints[8]["type"], "prismatic");
+  EXPECT_EQ(joints[8]["mimic"]["joint"], "panda_finger_joint1");
+}
+
+TEST(Inspect, TextOutputSummarisesTheModel) {
+  const CliResult r = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("actuated dofs: 32   mass: 90.2722 kg   links: 60"));
+  EXPECT_THAT(r.out, HasSubstr("leg_left_4_joint"));
+}
+
+TEST(Inspect, MissingFileExitsOneWithTheFileNamed) {
+  const CliResult r = run({"inspect", "/nonexistent/robot.urdf"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "stanceplan: error: /nonexistent/robot.urdf: no such file\n");
+}
+
+TEST(Inspect, UsageErrorsExitOne) {
+  EXPECT_EQ(run({}).code, 1);
+  EXPECT_EQ(run({"inspect"}).code, 1);
+  const CliResult r = run({"inspect", test::panda_urdf(), "--kind", "wheeled"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--kind"));
+}
+
+TEST(Inspect, BinaryExitCodes) {
+  const std::string bin = STANCEPLAN_BINARY;
+  EXPECT_EQ(std::system((bin + " --help > /dev/null").c_str()), 0);
+  const int status = std::system((bin + " inspect /nonexistent.urdf 2> /dev/null").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+}
+
+}  // namespace
+}  // namespace stanceplan
