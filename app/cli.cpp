@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "app/inspect_command.h"
+#include "app/posture_command.h"
 #include "planner/util/input_error.h"
 
 namespace stanceplan::app {
@@ -26,6 +27,15 @@ void add_inspect(CLI::App& cli, InspectOptions& options) {
   cmd->add_flag("--json", options.json, "print one JSON object");
 }
 
+void add_posture(CLI::App& cli, PostureOptions& options) {
+  CLI::App* cmd = cli.add_subcommand("posture", "Solve one stance of a scenario (every contact loaded) and write "
+                                                "it as a one-step plan. Exit 2 when no posture exists");
+  cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")->required();
+  cmd->add_option("--stance", options.stance, "which stance: initial or goal")
+      ->check(CLI::IsMember({"initial", "goal"}));
+  cmd->add_option("--out", options.out, "plan file to write (default: standard output)");
+}
+
 }  // namespace
 
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -34,6 +44,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   cli.require_subcommand(1);
   InspectOptions inspect;
   add_inspect(cli, inspect);
+  PostureOptions posture;
+  add_posture(cli, posture);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -45,7 +57,11 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   }
   try {
     if (cli.got_subcommand("inspect")) return run_inspect(inspect, out, err);
+    if (cli.got_subcommand("posture")) return run_posture(posture, out, err);
   } catch (const InputError& e) {
+    err << "stanceplan: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::runtime_error& e) {  // e.g. an output file that cannot be written
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;
   }

@@ -9,3 +9,4 @@ find_package(yaml-cpp REQUIRED)       # target `yaml-cpp` (0.7 has no namespaced
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(tinyxml2 QUIET)
+find_package(Qhull REQUIRED)          # libqhull-dev: convex hulls of collision meshes

@@ -1,0 +1,61 @@
+#include "app/posture_command.h"
+
+#include <iomanip>
+#include <ostream>
+
+#include "app/cli.h"
+#include "planner/io/plan_writer.h"
+#include "planner/solver/posture_solver.h"
+
+namespace stanceplan::app {
+
+int run_posture(const PostureOptions& options, std::ostream& out, std::ostream& err) {
+  const Scenario scenario = load_scenario(options.scenario);
+  const bool goal = options.stance == "goal";
+  const std::vector<StanceContact>& contacts = goal ? scenario.goal_stance : scenario.initial_stance;
+  PostureRequest request;
+  for (const StanceContact& c : contacts) {
+    ContactTask task;
+    task.contact = c.contact;
+    task.placement = c.placement;
+    request.contacts.push_back(task);
+  }
+  // The goal's best guess is the last milestone (the guide path ends at q_goal).
+  request.q_init = goal && !scenario.milestones.empty() ? scenario.milestones.back() : scenario.initial_configuration;
+  request.q_ref = request.q_init;
+  SolverOptions solver_options = scenario.solver;
+  solver_options.diagnose_infeasibility = true;
+  const PostureSolver solver(scenario.scene, solver_options);
+  const PostureResult result = solver.solve(request);
+  if (result.status != PostureStatus::Solved) {
+    err << "stanceplan: no posture for the " << options.stance << " stance of " << options.scenario << ": "
+        << to_string(result.status) << " (" << result.message << ")\n";
+    for (const auto& [family, residual] : result.residuals)
+      err << "  " << std::left << std::setw(18) << family << " worst violation " << residual << "\n";
+    return kExitFailed;
+  }
+  PlanStep step;
+  for (const ContactTask& t : request.contacts) step.contacts.push_back({t.contact, true});
+  step.stance = scenario.stance(contacts);
+  step.q = result.q;
+  step.forces = result.forces;
+  step.torques = result.torques;
+  step.iterations = result.iterations;
+  step.time_ms = result.time_ms;
+  step.objective = result.objective;
+  Plan plan;
+  plan.steps.push_back(step);
+  plan.stats.solver_calls = 1;
+  plan.stats.wall_time_s = result.time_ms / 1000.0;
+  if (options.out.empty()) {
+    out << plan_to_json(plan, scenario, "./posture.json") << "\n";
+  } else {
+    write_plan(plan, scenario, options.out);
+    out << "wrote " << options.out << "\n";
+  }
+  err << "solved the " << options.stance << " stance in " << result.iterations << " iterations, " << std::fixed
+      << std::setprecision(1) << result.time_ms << " ms\n";
+  return kExitSuccess;
+}
+
+}  // namespace stanceplan::app

@@ -1,0 +1,43 @@
+#pragma once
+// Scenario files (`stanceplan/scenario@1`, YAML; every field is documented in
+// scenarios/README.md): the entities, the initial and goal stances, the guide milestones, the
+// physics, the solver weights, collision settings and the search budgets. Paths inside are
+// relative to the scenario file's folder.
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planner/scene/scene_builder.h"
+#include "planner/search/search_options.h"
+#include "planner/solver/posture_request.h"
+
+namespace stanceplan {
+
+// A contact of a stance as the scenario states it.
+struct StanceContact {
+  Contact contact;
+  std::optional<Placement> placement;  // fixed placement, when the scenario gives one
+};
+
+struct Scenario {
+  std::string file;  // as given to load_scenario
+  std::string name;
+  std::string description;
+  SceneSpec spec;    // entities with resolved paths, ignored pairs, gravity
+  Scene scene;
+  Eigen::VectorXd initial_configuration;
+  std::vector<StanceContact> initial_stance;
+  std::vector<StanceContact> goal_stance;
+  std::vector<Eigen::VectorXd> milestones;  // full configurations, partial ones completed
+  SolverOptions solver;
+  SearchOptions search;
+
+  Stance stance(const std::vector<StanceContact>& contacts) const;
+};
+
+// Throws InputError "FILE:LINE: FIELD: what was expected, what was found" on any fault, and the
+// loaders' own errors (URDF, surfaces, meshes) for the files the scenario names.
+Scenario load_scenario(const std::string& path);
+
+}  // namespace stanceplan

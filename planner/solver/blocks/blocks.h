@@ -1,0 +1,129 @@
+#pragma once
+// The constraint families of the IK-statics program (METHOD.md section 4), one class per family,
+// each implemented in its own file.
+#include <memory>
+#include <vector>
+
+#include "planner/collision/signed_distance.h"
+#include "planner/solver/constraint_block.h"
+
+namespace stanceplan {
+
+// |phi|^2 = 1 for the root quaternion of every floating robot and object.
+class QuaternionNormBlock : public ConstraintBlock {
+ public:
+  explicit QuaternionNormBlock(const System& system);
+  int rows() const override { return static_cast<int>(entities_.size()); }
+  void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
+  void row_columns(int r, std::vector<int>* columns) const override;
+  void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+
+ private:
+  const System& system_;
+  std::vector<int> entities_;
+};
+
+// E8-E13 for one contact: normals opposed (2 rows + a branch inequality), s1's origin on s2's
+// plane, and for a fixed placement the position (x_c, y_c) and orientation theta_c (1 row + a
+// branch inequality). A free placement (case 1) keeps only the first three rows and the branch.
+class ContactGeometryBlock : public ConstraintBlock {
+ public:
+  ContactGeometryBlock(const NlpState& state, int task);
+  int rows() const override { return fixed_ ? 8 : 4; }
+  void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
+  void row_columns(int r, std::vector<int>* columns) const override;
+  void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+
+ private:
+  int task_;
+  bool fixed_;
+  Placement placement_;
+  std::vector<int> columns_;
+};
+
+// Case 1 relaxation of E10-E11: every vertex of s1 inside s2's convex polygon, as linear
+// inequalities in s2's plane (one per vertex of s1 and edge of s2).
+class PolygonBlock : public ConstraintBlock {
+ public:
+  PolygonBlock(const NlpState& state, int task);
+  int rows() const override { return static_cast<int>(vertices1_ * edge_normals_.size()); }
+  void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
+  void row_columns(int r, std::vector<int>* columns) const override;
+  void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+
+ private:
+  int task_;
+  int vertices1_;
+  std::vector<Eigen::Vector2d> edge_normals_;  // inward unit normals of s2's edges, s2's plane
+  std::vector<double> edge_offsets_;           // n_e . a_e
+  std::vector<int> columns_;
+};
+
+// E16-E17: static equilibrium of one floating robot or object, divided by m |g| so that the rows
+// are dimensionless: sum of received forces + m g = 0, sum of their moments about the world
+// origin + C x m g = 0.
+class EquilibriumBlock : public ConstraintBlock {
+ public:
+  EquilibriumBlock(const NlpState& state, int entity);
+  int rows() const override { return 6; }
+  void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
+  void row_columns(int r, std::vector<int>* columns) const override;
+  void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+
+ private:
+  struct Received {
+    int task, vertex;
+    double sign;  // +1 as s1's entity, -1 as s2's entity
+  };
+  int entity_;
+  double scale_;  // 1 / (m |g|)
+  std::vector<Received> received_;
+  std::vector<int> columns_;
+};
+
+// E18-E19: -1 <= tau_k / effort_k <= 1 for every dof of one robot with an effort limit.
+class TorqueLimitBlock : public ConstraintBlock {
+ public:
+  TorqueLimitBlock(const NlpState& state, int entity);
+  int rows() const override { return static_cast<int>(dofs_.size()); }
+  void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
+  void row_columns(int r, std::vector<int>* columns) const override;
+  void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  bool empty() const { return dofs_.empty(); }
+
+ private:
+  int entity_;
+  std::vector<int> dofs_;
+  std::vector<double> efforts_;
+  std::vector<int> columns_;
+};
+
+// E20: signed distance >= margin for every active pair of links (E48 for the gradient).
+class CollisionBlock : public ConstraintBlock {
+ public:
+  CollisionBlock(const NlpState& state, std::vector<int> pairs, double margin);
+  int rows() const override { return static_cast<int>(pairs_.size()); }
+  void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
+  void row_columns(int r, std::vector<int>* columns) const override;
+  void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+
+ private:
+  void update(NlpState& state) const;  // distances at the state's current x
+
+  const System& system_;
+  const CollisionModel& model_;
+  std::vector<int> pairs_;
+  double margin_;
+  mutable CollisionData work_;
+  mutable std::vector<DistanceResult> results_;
+  mutable Eigen::VectorXd x_of_results_;
+  mutable Eigen::RowVectorXd gradient_;
+};
+
+}  // namespace stanceplan

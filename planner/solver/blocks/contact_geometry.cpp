@@ -1,0 +1,83 @@
+#include <algorithm>
+#include <cmath>
+
+#include "planner/solver/blocks/blocks.h"
+
+namespace stanceplan {
+namespace {
+constexpr double kInf = 1e19;  // Ipopt's "no bound"
+}
+
+ContactGeometryBlock::ContactGeometryBlock(const NlpState& state, int task)
+    : ConstraintBlock("contact_geometry"), task_(task) {
+  const ContactTask& t = state.request.contacts[task];
+  fixed_ = t.placement.has_value();
+  if (fixed_) placement_ = *t.placement;
+  const ContactConstants& c = state.constants[task];
+  append_link_columns(state.scene.system, c.e1, c.l1, &columns_);
+  append_link_columns(state.scene.system, c.e2, c.l2, &columns_);
+  std::sort(columns_.begin(), columns_.end());
+  columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
+}
+
+void ContactGeometryBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,
+                                  Eigen::Ref<Eigen::VectorXd> upper) const {
+  lower.setZero();
+  upper.setZero();
+  lower[3] = -kInf;  // z1 . z2 <= 0: the opposed branch of E8
+  if (!fixed_) return;
+  lower[4] = upper[4] = placement_.x;
+  lower[5] = upper[5] = placement_.y;
+  upper[7] = kInf;  // x1 . (cos x2 + sin y2) >= 0: the right branch of E12-E13
+}
+
+void ContactGeometryBlock::row_columns(int, std::vector<int>* columns) const {
+  columns->insert(columns->end(), columns_.begin(), columns_.end());
+}
+
+void ContactGeometryBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const {
+  const ContactFrames& f = state.frames[task_];
+  const Eigen::Vector3d d = f.O1 - f.O2;
+  g[0] = f.z1.dot(f.x2);  // E8: z1 = -z2, as two orthogonality conditions
+  g[1] = f.z1.dot(f.y2);
+  g[2] = d.dot(f.z2);     // E9: s1's origin on s2's plane
+  g[3] = f.z1.dot(f.z2);
+  if (!fixed_) return;
+  const double c = std::cos(placement_.theta), s = std::sin(placement_.theta);
+  g[4] = d.dot(f.x2);  // E10-E11: placement
+  g[5] = d.dot(f.y2);
+  g[6] = c * f.x1.dot(f.y2) - s * f.x1.dot(f.x2);  // E12-E13: sin(theta_1 - theta_c) = 0
+  g[7] = c * f.x1.dot(f.x2) + s * f.x1.dot(f.y2);
+}
+
+void ContactGeometryBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const {
+  state.ensure_jacobians();
+  const ContactFrames& f = state.frames[task_];
+  const ContactConstants& k = state.constants[task_];
+  const Eigen::Vector3d d = f.O1 - f.O2;
+  // d(a . b) = b^T da + a^T db, each on the entity the vector moves with.
+  auto dot_s1_s2 = [&](int row, const Eigen::MatrixXd& Ja, const Eigen::Vector3d& a,
+                       const Eigen::MatrixXd& Jb, const Eigen::Vector3d& b, double w) {
+    state.add_entity_term(k.e1, Ja, w * b, J.row(row));
+    state.add_entity_term(k.e2, Jb, w * a, J.row(row));
+  };
+  auto offset_dot = [&](int row, const Eigen::MatrixXd& Jb, const Eigen::Vector3d& b) {
+    state.add_entity_term(k.e1, f.J_O1, b, J.row(row));
+    state.add_entity_term(k.e2, f.J_O2, -b, J.row(row));
+    state.add_entity_term(k.e2, Jb, d, J.row(row));
+  };
+  dot_s1_s2(0, f.J_z1, f.z1, f.J_x2, f.x2, 1.0);
+  dot_s1_s2(1, f.J_z1, f.z1, f.J_y2, f.y2, 1.0);
+  offset_dot(2, f.J_z2, f.z2);
+  dot_s1_s2(3, f.J_z1, f.z1, f.J_z2, f.z2, 1.0);
+  if (!fixed_) return;
+  const double c = std::cos(placement_.theta), s = std::sin(placement_.theta);
+  offset_dot(4, f.J_x2, f.x2);
+  offset_dot(5, f.J_y2, f.y2);
+  dot_s1_s2(6, f.J_x1, f.x1, f.J_y2, f.y2, c);
+  dot_s1_s2(6, f.J_x1, f.x1, f.J_x2, f.x2, -s);
+  dot_s1_s2(7, f.J_x1, f.x1, f.J_x2, f.x2, c);
+  dot_s1_s2(7, f.J_x1, f.x1, f.J_y2, f.y2, s);
+}
+
+}  // namespace stanceplan

@@ -1,0 +1,73 @@
+#include <algorithm>
+
+#include "planner/solver/blocks/blocks.h"
+
+namespace stanceplan {
+
+EquilibriumBlock::EquilibriumBlock(const NlpState& state, int entity)
+    : ConstraintBlock("equilibrium"), entity_(entity) {
+  const System& system = state.scene.system;
+  scale_ = 1.0 / (system.entity(entity).model->total_mass * state.scene.gravity.norm());
+  append_entity_columns(system, entity, &columns_);
+  for (int t = 0; t < static_cast<int>(state.constants.size()); ++t) {
+    if (state.layout.force_block_of_task[t] < 0) continue;
+    const ContactConstants& c = state.constants[t];
+    if (c.e1 != entity && c.e2 != entity) continue;
+    for (int j = 0; j < static_cast<int>(c.v1_L.size()); ++j) {
+      // E16-E17 sign rule: +f as the smaller surface's entity, -f as the larger's.
+      if (c.e1 == entity) received_.push_back({t, j, 1.0});
+      if (c.e2 == entity) received_.push_back({t, j, -1.0});
+    }
+    append_link_columns(system, c.e1, c.l1, &columns_);
+    append_link_columns(system, c.e2, c.l2, &columns_);
+    append_force_columns(state.layout, t, &columns_);
+  }
+  std::sort(columns_.begin(), columns_.end());
+  columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
+}
+
+void EquilibriumBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,
+                              Eigen::Ref<Eigen::VectorXd> upper) const {
+  lower.setZero();
+  upper.setZero();
+}
+
+void EquilibriumBlock::row_columns(int, std::vector<int>* columns) const {
+  columns->insert(columns->end(), columns_.begin(), columns_.end());
+}
+
+void EquilibriumBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const {
+  const double mass = state.scene.system.entity(entity_).model->total_mass;
+  const Eigen::Vector3d weight = mass * state.scene.gravity;
+  Eigen::Vector3d force = weight;                           // E16
+  Eigen::Vector3d moment = state.com[entity_].cross(weight);  // E17, about the world origin
+  for (const Received& r : received_) {
+    const ContactFrames& f = state.frames[r.task];
+    force += r.sign * f.f[r.vertex];
+    moment += r.sign * f.p[r.vertex].cross(f.f[r.vertex]);
+  }
+  g.head<3>() = scale_ * force;
+  g.tail<3>() = scale_ * moment;
+}
+
+void EquilibriumBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const {
+  state.ensure_jacobians();
+  const double mass = state.scene.system.entity(entity_).model->total_mass;
+  const Eigen::Vector3d weight = mass * state.scene.gravity;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(i);
+    // (C x mg)_i = C . (mg x e_i)
+    state.add_entity_term(entity_, state.J_com[entity_], scale_ * weight.cross(e), J.row(3 + i));
+    for (const Received& r : received_) {
+      const ContactFrames& f = state.frames[r.task];
+      const double w = r.sign * scale_;
+      state.add_force_term(r.task, r.vertex, w * e, J.row(i));
+      // (p x f)_i = p . (f x e_i) = f . (e_i x p)
+      const int e1 = state.constants[r.task].e1;
+      state.add_entity_term(e1, f.J_p[r.vertex], w * f.f[r.vertex].cross(e), J.row(3 + i));
+      state.add_force_term(r.task, r.vertex, w * e.cross(f.p[r.vertex]), J.row(3 + i));
+    }
+  }
+}
+
+}  // namespace stanceplan

@@ -1,0 +1,63 @@
+#include <algorithm>
+
+#include "planner/solver/blocks/blocks.h"
+
+namespace stanceplan {
+
+PolygonBlock::PolygonBlock(const NlpState& state, int task) : ConstraintBlock("polygon"), task_(task) {
+  const ContactConstants& c = state.constants[task];
+  vertices1_ = static_cast<int>(c.v1_L.size());
+  const auto& poly = c.v2_S;
+  const int n = static_cast<int>(poly.size());
+  for (int e = 0; e < n; ++e) {
+    const Eigen::Vector2d edge = (poly[(e + 1) % n] - poly[e]).normalized();
+    const Eigen::Vector2d inward(-edge.y(), edge.x());  // left of a counter-clockwise edge
+    edge_normals_.push_back(inward);
+    edge_offsets_.push_back(inward.dot(poly[e]));
+  }
+  append_link_columns(state.scene.system, c.e1, c.l1, &columns_);
+  append_link_columns(state.scene.system, c.e2, c.l2, &columns_);
+  std::sort(columns_.begin(), columns_.end());
+  columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
+}
+
+void PolygonBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const {
+  lower.setZero();
+  upper.setConstant(1e19);
+}
+
+void PolygonBlock::row_columns(int, std::vector<int>* columns) const {
+  columns->insert(columns->end(), columns_.begin(), columns_.end());
+}
+
+// Row (j, e): (p_j - O2) . (n_x x2 + n_y y2) - n_e . a_e >= 0: vertex j of s1 on the inner side
+// of edge e of s2.
+void PolygonBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const {
+  const ContactFrames& f = state.frames[task_];
+  const int edges = static_cast<int>(edge_normals_.size());
+  for (int j = 0; j < vertices1_; ++j)
+    for (int e = 0; e < edges; ++e) {
+      const Eigen::Vector3d w = edge_normals_[e].x() * f.x2 + edge_normals_[e].y() * f.y2;
+      g[j * edges + e] = (f.p[j] - f.O2).dot(w) - edge_offsets_[e];
+    }
+}
+
+void PolygonBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const {
+  state.ensure_jacobians();
+  const ContactFrames& f = state.frames[task_];
+  const ContactConstants& k = state.constants[task_];
+  const int edges = static_cast<int>(edge_normals_.size());
+  for (int j = 0; j < vertices1_; ++j)
+    for (int e = 0; e < edges; ++e) {
+      const int r = j * edges + e;
+      const double nx = edge_normals_[e].x(), ny = edge_normals_[e].y();
+      const Eigen::Vector3d w = nx * f.x2 + ny * f.y2;
+      const Eigen::Vector3d d = f.p[j] - f.O2;
+      state.add_entity_term(k.e1, f.J_p[j], w, J.row(r));
+      state.add_entity_term(k.e2, f.J_O2, -w, J.row(r));
+      state.add_entity_term(k.e2, f.J_x2, nx * d, J.row(r));
+      state.add_entity_term(k.e2, f.J_y2, ny * d, J.row(r));
+    }
+}
+
+}  // namespace stanceplan

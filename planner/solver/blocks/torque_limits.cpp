@@ -1,0 +1,50 @@
+#include <algorithm>
+
+#include "planner/solver/blocks/blocks.h"
+
+namespace stanceplan {
+
+TorqueLimitBlock::TorqueLimitBlock(const NlpState& state, int entity)
+    : ConstraintBlock("torque_limits"), entity_(entity) {
+  const System& system = state.scene.system;
+  const Model& model = *system.entity(entity).model;
+  for (int k = 0; k < model.num_dofs(); ++k) {
+    const double effort = model.joints[model.dof_joints[k]].effort;
+    if (effort <= 0.0) continue;  // no effort limit given in the URDF
+    dofs_.push_back(k);
+    efforts_.push_back(effort);
+  }
+  append_entity_columns(system, entity, &columns_);
+  for (int t = 0; t < static_cast<int>(state.constants.size()); ++t) {
+    if (state.layout.force_block_of_task[t] < 0) continue;
+    const ContactConstants& c = state.constants[t];
+    if (c.e1 != entity && c.e2 != entity) continue;
+    append_link_columns(system, c.e1, c.l1, &columns_);
+    append_link_columns(system, c.e2, c.l2, &columns_);
+    append_force_columns(state.layout, t, &columns_);
+  }
+  std::sort(columns_.begin(), columns_.end());
+  columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
+}
+
+void TorqueLimitBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,
+                              Eigen::Ref<Eigen::VectorXd> upper) const {
+  lower.setConstant(-1.0);  // E19, as a fraction of the URDF effort limit
+  upper.setConstant(1.0);
+}
+
+void TorqueLimitBlock::row_columns(int, std::vector<int>* columns) const {
+  columns->insert(columns->end(), columns_.begin(), columns_.end());
+}
+
+void TorqueLimitBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const {
+  state.ensure_torques();
+  for (int r = 0; r < rows(); ++r) g[r] = state.tau[entity_][dofs_[r]] / efforts_[r];
+}
+
+void TorqueLimitBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const {
+  state.ensure_torques();
+  for (int r = 0; r < rows(); ++r) J.row(r) = state.dtau_dx[entity_].row(dofs_[r]) / efforts_[r];
+}
+
+}  // namespace stanceplan

@@ -1,0 +1,54 @@
+#pragma once
+// The IK-statics program of one request, assembled from named constraint blocks, as flat arrays
+// in the shape every NLP solver wants (n, m, bounds, sparse Jacobian triplets). Independent of
+// Ipopt: the adapter (ipopt_adapter.cpp) and the tests both drive it.
+#include <memory>
+#include <vector>
+
+#include "planner/solver/constraint_block.h"
+#include "planner/solver/objective.h"
+
+namespace stanceplan {
+
+class PostureNlp {
+ public:
+  // active_pairs: indices into scene.collision->pairs() that enter the program (E20).
+  PostureNlp(const Scene& scene, const PostureRequest& request, const SolverOptions& options,
+             std::vector<int> active_pairs);
+
+  int n() const { return layout_.n; }
+  int m() const { return m_; }
+  int nnz() const { return static_cast<int>(rows_.size()); }
+  const NlpLayout& layout() const { return layout_; }
+  NlpState& state() { return state_; }
+  const std::vector<std::unique_ptr<ConstraintBlock>>& blocks() const { return blocks_; }
+  int block_first_row(int b) const { return first_row_[b]; }
+
+  void variable_bounds(double* lower, double* upper) const;  // E6 joint limits, E7 lambda >= 0
+  void constraint_bounds(double* lower, double* upper) const;
+  void structure(int* rows, int* cols) const;
+  void starting_point(double* x) const;
+
+  // `new_x` false promises that x equals the previous call's x (Ipopt's convention).
+  double objective(const double* x, bool new_x);
+  void objective_gradient(const double* x, bool new_x, double* grad);
+  void constraints(const double* x, bool new_x, double* g);
+  void jacobian_values(const double* x, bool new_x, double* values);
+  // The dense Jacobian (m x n), for tests.
+  const Eigen::MatrixXd& dense_jacobian(const double* x, bool new_x);
+
+ private:
+  void update(const double* x, bool new_x);
+
+  NlpLayout layout_;
+  NlpState state_;
+  Objective objective_;
+  std::vector<std::unique_ptr<ConstraintBlock>> blocks_;
+  std::vector<int> first_row_;
+  int m_ = 0;
+  std::vector<int> rows_, cols_;
+  Eigen::MatrixXd J_;
+  bool has_x_ = false;
+};
+
+}  // namespace stanceplan

@@ -1,0 +1,54 @@
+#pragma once
+// The input of one inverse-kinematics-and-statics solve (METHOD.md section 4).
+//   realise a stance:  every contact loaded;
+//   case 1 (add c):    sigma's contacts loaded, c touched but unloaded with a free placement;
+//   case 2 (remove c): every contact of sigma touched, c unloaded.
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "planner/contact/contact.h"
+
+namespace stanceplan {
+
+struct ContactTask {
+  Contact contact;
+  bool loaded = true;  // carries force (lambda variables) in this solve
+  // Fixed placement (E10-E13). nullopt: free, s1 kept inside s2's polygon (case 1 relaxation).
+  std::optional<Placement> placement;
+  // Optional E25 target for a free placement (obj4: pull s1's origin towards (x, y) of s2's plane).
+  std::optional<Placement> placement_target;
+};
+
+struct PostureRequest {
+  std::vector<ContactTask> contacts;
+  Eigen::VectorXd q_init;  // initial guess (warm start), System::nq()
+  Eigen::VectorXd q_ref;   // milestone configuration of the objective (E21); empty: q_init
+};
+
+struct SolverOptions {
+  double friction = 1.0;        // Coulomb coefficient mu of every unilateral contact
+  int cone_generators = 4;      // K: generators of the linearised friction cone (E5)
+  // Objective weights (E21-E25): configuration, contact force (lambda), joint torque, placement.
+  double w_configuration = 1.0;
+  double w_force = 1e-5;
+  double w_torque = 1e-5;
+  double w_placement = 10.0;
+  double collision_margin = 0.005;   // E20: signed distance >= margin (m)
+  double collision_active_distance = 0.05;  // pairs closer than this enter the program
+  int max_active_set_rounds = 4;     // re-solves when a pair outside the active set penetrates
+  int max_iterations = 300;
+  double tolerance = 1e-6;           // constraint violation and complementarity (Ipopt)
+  double optimality_tolerance = 1e-4;  // Ipopt tol / dual_inf_tol (the objective is a regulariser)
+  bool derivative_test = false;      // Ipopt's first-order derivative checker (tests only)
+  // Families that can be switched off (diagnosis, experiments).
+  bool enforce_torque_limits = true;
+  bool enforce_collisions = true;
+  // When a solve fails, re-solve without torque limits, then without collision avoidance, to name
+  // the family that makes the request infeasible (PostureResult::blocking_family). Costs up to
+  // two more solves per failure: on for single postures, off in the search.
+  bool diagnose_infeasibility = false;
+  int print_level = 0;               // Ipopt's console output (0 = silent, 5 = per iteration)
+};
+
+}  // namespace stanceplan

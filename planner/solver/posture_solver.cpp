@@ -1,0 +1,233 @@
+#include "planner/solver/posture_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "planner/collision/signed_distance.h"
+#include "planner/model/kinematics.h"
+#include "planner/solver/ipopt_adapter.h"
+#include "planner/solver/posture_nlp.h"
+
+namespace stanceplan {
+namespace {
+
+std::vector<ModelData> kinematics_at(const System& system, const Eigen::VectorXd& q) {
+  std::vector<ModelData> data;
+  for (int e = 0; e < system.num_entities(); ++e) {
+    data.emplace_back(system.entity(e));
+    forward_kinematics(system.entity(e), q.segment(system.offset(e), system.entity(e).nq()), data.back());
+  }
+  return data;
+}
+
+// Signed distance of every candidate pair that is not excluded (+inf for excluded ones).
+std::vector<double> pair_distances(const Scene& scene, const Eigen::VectorXd& q,
+                                   const std::vector<bool>& excluded, double cutoff) {
+  const CollisionModel& model = *scene.collision;
+  const std::vector<ModelData> data = kinematics_at(scene.system, q);
+  CollisionData work(scene.system, model);
+  work.update(model, data);
+  std::vector<double> d(model.pairs().size(), INFINITY);
+  for (size_t p = 0; p < d.size(); ++p) {
+    if (excluded[p]) continue;
+    if (distance_lower_bound(model, data, int(p)) >= cutoff) continue;  // certainly far
+    d[p] = signed_distance(model, work, int(p)).distance;
+  }
+  return d;
+}
+
+void normalise_quaternions(const System& system, Eigen::VectorXd& q) {
+  for (int e = 0; e < system.num_entities(); ++e)
+    if (system.entity(e).floating()) {
+      auto quat = q.segment<4>(system.offset(e) + Entity::kBaseQuaternion);
+      quat /= quat.norm();
+    }
+}
+
+void record_residuals(PostureNlp& nlp, const Eigen::VectorXd& x, PostureResult& result) {
+  const int n = nlp.n(), m = nlp.m();
+  Eigen::VectorXd g(m), gl(m), gu(m), xl(n), xu(n);
+  nlp.constraints(x.data(), true, g.data());
+  nlp.constraint_bounds(gl.data(), gu.data());
+  nlp.variable_bounds(xl.data(), xu.data());
+  for (size_t b = 0; b < nlp.blocks().size(); ++b) {
+    const auto& block = nlp.blocks()[b];
+    double& worst = result.residuals[block->family()];
+    for (int r = 0; r < block->rows(); ++r) {
+      const int i = nlp.block_first_row(int(b)) + r;
+      worst = std::max({worst, gl[i] - g[i], g[i] - gu[i], 0.0});
+    }
+  }
+  double& limits = result.residuals["joint_limits"];
+  for (int i = 0; i < nlp.layout().nq; ++i) limits = std::max({limits, xl[i] - x[i], x[i] - xu[i], 0.0});
+  double& friction = result.residuals["friction"];
+  for (int i = nlp.layout().nq; i < n; ++i) friction = std::max({friction, xl[i] - x[i], 0.0});
+}
+
+void record_physics(PostureNlp& nlp, const PostureRequest& request, PostureResult& result) {
+  NlpState& state = nlp.state();
+  state.ensure_torques();
+  for (size_t t = 0; t < request.contacts.size(); ++t) {
+    const ContactFrames& f = state.frames[t];
+    const Eigen::Vector3d d = f.O1 - f.O2;
+    result.placements.push_back({d.dot(f.x2), d.dot(f.y2), std::atan2(f.x1.dot(f.y2), f.x1.dot(f.x2))});
+    if (nlp.layout().force_block_of_task[t] < 0) continue;
+    for (size_t j = 0; j < f.p.size(); ++j) result.forces.push_back({int(t), int(j), f.p[j], f.f[j]});
+  }
+  result.torques = state.tau;
+}
+
+}  // namespace
+
+PostureSolver::PostureSolver(const Scene& scene, SolverOptions options)
+    : scene_(scene), options_(std::move(options)) {
+  if (options_.cone_generators < 3)
+    throw std::invalid_argument("cone_generators must be >= 3, got " + std::to_string(options_.cone_generators));
+  if (!(options_.friction > 0.0))
+    throw std::invalid_argument("friction must be > 0, got " + std::to_string(options_.friction));
+}
+
+void PostureSolver::validate(const PostureRequest& request) const {
+  const System& system = scene_.system;
+  if (request.q_init.size() != system.nq())
+    throw std::invalid_argument("q_init has " + std::to_string(request.q_init.size()) +
+                                " entries, the system has " + std::to_string(system.nq()));
+  if (request.q_ref.size() != 0 && request.q_ref.size() != system.nq())
+    throw std::invalid_argument("q_ref has " + std::to_string(request.q_ref.size()) +
+                                " entries, the system has " + std::to_string(system.nq()));
+  if (!request.q_init.allFinite()) throw std::invalid_argument("q_init is not finite");
+  // A surface is the smaller side (s1) of at most one contact and then of nothing else; a larger
+  // surface (s2, e.g. the floor) may support several contacts.
+  std::vector<SurfaceRef> smaller, larger;
+  for (const ContactTask& task : request.contacts) {
+    for (SurfaceRef s : {task.contact.s1, task.contact.s2})
+      if (s.entity < 0 || s.entity >= system.num_entities() || s.index < 0 ||
+          s.index >= int(scene_.surfaces.of(s.entity).size()))
+        throw std::invalid_argument("a contact names a surface that does not exist");
+    const SurfaceRef r1 = task.contact.s1, r2 = task.contact.s2;
+    const auto in = [](const std::vector<SurfaceRef>& list, SurfaceRef s) {
+      return std::find(list.begin(), list.end(), s) != list.end();
+    };
+    if (in(smaller, r1) || in(larger, r1) || in(smaller, r2))
+      throw std::invalid_argument("surface " + scene_.surfaces.id(system, in(smaller, r2) ? r2 : r1) +
+                                  " is in two contacts (a contact's smaller surface s1 is in no other)");
+    smaller.push_back(r1);
+    larger.push_back(r2);
+    const Surface& s1 = scene_.surfaces.get(task.contact.s1);
+    const Surface& s2 = scene_.surfaces.get(task.contact.s2);
+    if (task.contact.s1.entity == task.contact.s2.entity && s1.link == s2.link)
+      throw std::invalid_argument("contact " + scene_.surfaces.id(system, task.contact.s1) + " - " +
+                                  scene_.surfaces.id(system, task.contact.s2) + " joins two surfaces of one link");
+  }
+}
+
+std::vector<bool> PostureSolver::excluded_pairs(const PostureRequest& request) const {
+  std::vector<bool> excluded(scene_.collision ? scene_.collision->pairs().size() : 0, false);
+  if (!scene_.collision) return excluded;
+  for (const ContactTask& task : request.contacts) {
+    const Contact& c = task.contact;
+    const int p = scene_.collision->find_pair(c.s1.entity, scene_.surfaces.get(c.s1).link, c.s2.entity,
+                                              scene_.surfaces.get(c.s2).link);
+    if (p >= 0) excluded[p] = true;
+  }
+  return excluded;
+}
+
+PostureResult PostureSolver::solve(const PostureRequest& request) const {
+  validate(request);
+  PostureResult result = solve_once(request, options_);
+  if (result.status != PostureStatus::Solved && options_.diagnose_infeasibility) diagnose(request, result);
+  return result;
+}
+
+void PostureSolver::diagnose(const PostureRequest& request, PostureResult& result) const {
+  SolverOptions relaxed = options_;
+  relaxed.enforce_torque_limits = false;
+  if (solve_once(request, relaxed).status == PostureStatus::Solved) {
+    result.blocking_family = "torque_limits";
+  } else if (scene_.collision) {
+    relaxed = options_;
+    relaxed.enforce_collisions = false;
+    if (solve_once(request, relaxed).status == PostureStatus::Solved) result.blocking_family = "collision";
+  }
+  if (!result.blocking_family.empty())
+    result.message += "; infeasible because of " + result.blocking_family + " (solved without them)";
+}
+
+PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const SolverOptions& options) const {
+  PostureRequest request = request_in;
+  PostureResult result;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<int> active;
+  std::vector<bool> excluded = excluded_pairs(request);
+  const bool collisions = scene_.collision && options.enforce_collisions;
+  if (collisions) {
+    const auto d = pair_distances(scene_, request.q_init, excluded, options.collision_active_distance);
+    for (size_t p = 0; p < d.size(); ++p)
+      if (d[p] < options.collision_active_distance) active.push_back(int(p));
+  }
+  for (int round = 0;; ++round) {
+    PostureNlp nlp(scene_, request, options, active);
+    const IpoptRun run = run_ipopt(nlp, options);
+    result.iterations += run.iterations;
+    result.status = run.status;
+    result.message = run.message;
+    result.objective = run.objective;
+    if (run.x.size() != nlp.n()) break;
+    Eigen::VectorXd x = run.x;
+    result.residuals.clear();
+    result.forces.clear();
+    result.placements.clear();
+    record_residuals(nlp, x, result);
+    result.q = x.head(scene_.system.nq());
+    nlp.state().set_x(x.data());
+    record_physics(nlp, request, result);
+    if (run.status != PostureStatus::Solved || !collisions) break;
+    // Pairs outside the active set may have come closer than the margin: add them and re-solve.
+    const auto d = pair_distances(scene_, result.q, excluded, options.collision_margin);
+    double worst = 0.0;
+    size_t before = active.size();
+    for (size_t p = 0; p < d.size(); ++p) {
+      if (d[p] < options.collision_margin - 1e-4 &&
+          std::find(active.begin(), active.end(), int(p)) == active.end())
+        active.push_back(int(p));
+      if (d[p] < 0) worst = std::max(worst, -d[p]);
+    }
+    result.residuals["collision"] = std::max(result.residuals["collision"], worst);
+    if (active.size() == before) break;
+    if (round + 1 >= options.max_active_set_rounds) {
+      result.status = PostureStatus::Infeasible;
+      result.message = "collision: pairs still closer than the margin after " +
+                       std::to_string(round + 1) + " active-set rounds";
+      break;
+    }
+    std::sort(active.begin(), active.end());
+    request.q_init = result.q;
+  }
+  if (result.q.size() == scene_.system.nq()) normalise_quaternions(scene_.system, result.q);
+  if (result.status != PostureStatus::Solved && !result.residuals.empty())
+    result.message += "; worst violated family: " + result.worst_family();
+  result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+Placement measure_placement(const Scene& scene, const Contact& contact, const Eigen::VectorXd& q) {
+  const System& system = scene.system;
+  const Surface& s1 = scene.surfaces.get(contact.s1);
+  const Surface& s2 = scene.surfaces.get(contact.s2);
+  auto frame = [&](SurfaceRef ref, const Surface& s) {
+    const Entity& e = system.entity(ref.entity);
+    ModelData data(e);
+    forward_kinematics(e, q.segment(system.offset(ref.entity), e.nq()), data);
+    return Eigen::Isometry3d(data.T_WL[s.link] * s.T_LS);
+  };
+  const Eigen::Isometry3d T1 = frame(contact.s1, s1), T2 = frame(contact.s2, s2);
+  const Eigen::Vector3d d = T1.translation() - T2.translation();
+  const Eigen::Vector3d x1 = T1.linear().col(0);
+  return {d.dot(T2.linear().col(0)), d.dot(T2.linear().col(1)),
+          std::atan2(x1.dot(T2.linear().col(1)), x1.dot(T2.linear().col(0)))};
+}
+
+}  // namespace stanceplan

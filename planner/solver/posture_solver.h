@@ -1,0 +1,39 @@
+#pragma once
+// The inverse-kinematics-and-statics solver of METHOD.md section 4: one nonlinear program over
+// (q, lambda) per call, solved by Ipopt with exact first derivatives. Thread-safe: solve() may be
+// called from several threads (Ipopt itself is serialised inside the adapter).
+#include <vector>
+
+#include "planner/scene/scene.h"
+#include "planner/solver/posture_request.h"
+#include "planner/solver/posture_result.h"
+
+namespace stanceplan {
+
+class PostureSolver {
+ public:
+  PostureSolver(const Scene& scene, SolverOptions options);
+
+  // Throws std::invalid_argument when the request is malformed (sizes, unknown surfaces, a
+  // surface used twice, a contact within one link); every solver outcome is a status.
+  PostureResult solve(const PostureRequest& request) const;
+
+  const SolverOptions& options() const { return options_; }
+  const Scene& scene() const { return scene_; }
+
+  // Candidate collision pairs that a request excludes: the links touching through its contacts.
+  std::vector<bool> excluded_pairs(const PostureRequest& request) const;
+
+ private:
+  void validate(const PostureRequest& request) const;
+  PostureResult solve_once(const PostureRequest& request, const SolverOptions& options) const;
+  void diagnose(const PostureRequest& request, PostureResult& result) const;
+
+  const Scene& scene_;
+  SolverOptions options_;
+};
+
+// The realised placement of s1 in s2's frame at configuration q (E10-E13 read backwards).
+Placement measure_placement(const Scene& scene, const Contact& contact, const Eigen::VectorXd& q);
+
+}  // namespace stanceplan
