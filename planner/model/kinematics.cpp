@@ -55,6 +55,12 @@ void forward_kinematics(const Entity& entity, const Eigen::Ref<const Eigen::Vect
     data.origin_W[j] = T_WJ.translation();
     data.T_WL[i] = T_WJ * joint_motion(joint, value);
   }
+  for (int i = model.num_links() - 1; i >= 0; --i) {
+    const Inertial& inertial = model.links[i].inertial;
+    data.subtree_moment_W[i] = inertial.mass * (data.T_WL[i] * inertial.p_LC);
+  }
+  for (int i = model.num_links() - 1; i > 0; --i)
+    data.subtree_moment_W[model.links[i].parent_link] += data.subtree_moment_W[i];
 }
 
 void point_jacobian_world(const Entity& entity, const ModelData& data, int link,
@@ -106,24 +112,30 @@ void vector_jacobian(const Entity& entity, const ModelData& data, int link,
 
 Eigen::Vector3d center_of_mass(const Entity& entity, const ModelData& data) {
   const Model& model = *entity.model;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (int i = 0; i < model.num_links(); ++i) {
-    const Inertial& inertial = model.links[i].inertial;
-    sum += inertial.mass * (data.T_WL[i] * inertial.p_LC);
-  }
-  return model.total_mass > 0.0 ? Eigen::Vector3d(sum / model.total_mass) : data.p_WB;
+  return model.total_mass > 0.0 ? Eigen::Vector3d(data.subtree_moment_W[0] / model.total_mass) : data.p_WB;
 }
 
-void center_of_mass_jacobian(const Entity& entity, ModelData& data,
-                             Eigen::Ref<Eigen::MatrixXd> J) {
+void center_of_mass_jacobian(const Entity& entity, const ModelData& data, Eigen::Ref<Eigen::MatrixXd> J) {
   const Model& model = *entity.model;
   J.setZero();
   if (model.total_mass <= 0.0) return;
-  for (int i = 0; i < model.num_links(); ++i) {
-    const Inertial& inertial = model.links[i].inertial;
-    if (inertial.mass == 0.0) continue;
-    point_jacobian(entity, data, i, inertial.p_LC, data.scratch_3xn);
-    J += (inertial.mass / model.total_mass) * data.scratch_3xn;
+  const double inv_mass = 1.0 / model.total_mass;
+  if (entity.floating()) {
+    J.block<3, 3>(0, Entity::kBasePosition).setIdentity();
+    const Eigen::Vector3d c_B = data.R_WB.transpose() * (center_of_mass(entity, data) - data.p_WB);
+    for (int k = 0; k < 4; ++k) J.col(Entity::kBaseQuaternion + k) = data.dR_WB_dquat[k] * c_B;
+  }
+  const int first_dof = entity.first_dof();
+  for (int l = 1; l < model.num_links(); ++l) {
+    const int j = model.links[l].parent_joint;
+    const Joint& joint = model.joints[j];
+    if (!joint.movable()) continue;
+    // Joint j moves the subtree below it: M_l (c_l - o_j) turns about a_j, or M_l slides along it.
+    const double m = model.subtree_mass[l];
+    const Eigen::Vector3d& a = data.axis_W[j];
+    J.col(first_dof + joint.dof) += joint.multiplier * inv_mass *
+        (is_rotational(joint.type) ? Eigen::Vector3d(a.cross(data.subtree_moment_W[l] - m * data.origin_W[j]))
+                                   : Eigen::Vector3d(m * a));
   }
 }
 

@@ -23,7 +23,7 @@ void vector_jacobian(const Entity& entity, const ModelData& data, int link,
                      const Eigen::Vector3d& v_L, Eigen::Ref<Eigen::MatrixXd> J);
 
 Eigen::Vector3d center_of_mass(const Entity& entity, const ModelData& data);
-// d C / dq; uses data.scratch_3xn.
-void center_of_mass_jacobian(const Entity& entity, ModelData& data, Eigen::Ref<Eigen::MatrixXd> J);
+// d C / dq, from the subtree moments: a joint moves the CoM of everything below it.
+void center_of_mass_jacobian(const Entity& entity, const ModelData& data, Eigen::Ref<Eigen::MatrixXd> J);
 
 }  // namespace stanceplan

@@ -40,6 +40,11 @@ void Model::finalize() {
     if (joint.child_link != i || joint.parent_link != link.parent_link)
       throw std::logic_error("joint \"" + joint.name + "\" does not match its child link");
   }
+  subtree_mass.assign(links.size(), 0.0);
+  for (int i = num_links() - 1; i >= 0; --i) {
+    subtree_mass[i] += links[i].inertial.mass;
+    if (i > 0) subtree_mass[links[i].parent_link] += subtree_mass[i];
+  }
   for (int k = 0; k < num_dofs(); ++k) {
     const Joint& joint = joints.at(dof_joints[k]);
     if (joint.dof != k || joint.is_mimic || !joint.movable())

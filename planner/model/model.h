@@ -58,6 +58,7 @@ class Model {
   std::vector<Joint> joints;         // every joint, in the order of their child links
   std::vector<int> dof_joints;       // dof_joints[k] = joint index driven directly by q[k]
   double total_mass = 0.0;
+  std::vector<double> subtree_mass;  // per link: mass of the link and everything below it
   std::vector<std::string> load_warnings;  // non-fatal faults found while loading (skipped parts)
 
   int num_dofs() const { return static_cast<int>(dof_joints.size()); }

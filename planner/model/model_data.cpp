@@ -7,7 +7,7 @@ ModelData::ModelData(const Entity& entity)
       joint_position(entity.model->joints.size(), 0.0),
       axis_W(entity.model->joints.size(), Eigen::Vector3d::Zero()),
       origin_W(entity.model->joints.size(), Eigen::Vector3d::Zero()),
-      scratch_3xn(3, entity.nq()) {
+      subtree_moment_W(entity.model->links.size(), Eigen::Vector3d::Zero()) {
   for (Eigen::Matrix3d& d : dR_WB_dquat) d.setZero();
 }
 

@@ -16,11 +16,13 @@ struct ModelData {
   std::vector<double> joint_position;     // every joint's value (mimic applied), 0 for fixed
   std::vector<Eigen::Vector3d> axis_W;    // every joint's axis in the world frame
   std::vector<Eigen::Vector3d> origin_W;  // every joint frame's origin in the world frame
+  // Per link: first mass moment of its subtree, sum of m_i c_i over the link and its descendants
+  // (world frame). subtree_moment_W[0] / total mass is the centre of mass.
+  std::vector<Eigen::Vector3d> subtree_moment_W;
   // Root orientation and its derivative with respect to the 4 quaternion components (floating).
   Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
   Eigen::Vector3d p_WB = Eigen::Vector3d::Zero();
   std::array<Eigen::Matrix3d, 4> dR_WB_dquat;
-  Eigen::MatrixXd scratch_3xn;  // work matrix for com_jacobian
 };
 
 }  // namespace stanceplan

@@ -1,5 +1,6 @@
 #include "planner/solver/nlp_state.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/model/kinematics.h"
@@ -60,7 +61,7 @@ NlpState::NlpState(const Scene& scene_, const PostureRequest& request_,
                    const SolverOptions& options_, const NlpLayout& layout_)
     : scene(scene_), request(request_), options(options_), layout(layout_), x(layout_.n) {
   const System& system = scene.system;
-  int max_nq = 0, max_dof = 0;
+  int max_dof = 0;
   for (const Entity& e : system.entities()) {
     data.emplace_back(e);
     com.push_back(Eigen::Vector3d::Zero());
@@ -69,16 +70,30 @@ NlpState::NlpState(const Scene& scene_, const PostureRequest& request_,
     tau.push_back(Eigen::VectorXd::Zero(ndof));
     dtau_dx.push_back(Eigen::MatrixXd::Zero(ndof, ndof > 0 ? layout.n : 0));
     dtau_dq_.push_back(Eigen::MatrixXd::Zero(ndof, e.nq()));
-    max_nq = std::max(max_nq, e.nq());
     max_dof = std::max(max_dof, ndof);
   }
   for (const ContactTask& task : request.contacts) {
     constants.push_back(make_constants(scene, task, options));
     frames.push_back(make_frames(scene, constants.back()));
   }
+  for (const Entity& e : system.entities()) {
+    const Model& model = *e.model;
+    link_dofs_.emplace_back(model.num_links());
+    link_columns_.emplace_back(model.num_links());
+    for (int link = 0; link < model.num_links(); ++link) {
+      std::vector<int>& dofs = link_dofs_.back()[link];
+      for (int l = link; l > 0; l = model.links[l].parent_link) {
+        const Joint& joint = model.joints[model.links[l].parent_joint];
+        if (joint.movable() && std::find(dofs.begin(), dofs.end(), joint.dof) == dofs.end())
+          dofs.push_back(joint.dof);
+      }
+      std::vector<int>& columns = link_columns_.back()[link];
+      for (int i = 0; i < e.first_dof(); ++i) columns.push_back(i);
+      for (int d : dofs) columns.push_back(e.first_dof() + d);
+    }
+  }
   dtau_dp_.setZero(max_dof, 3);
   dtau_df_.setZero(max_dof, 3);
-  J_point_.setZero(3, max_nq);
 }
 
 void NlpState::set_x(const double* x_in) {
@@ -116,6 +131,7 @@ void NlpState::set_x(const double* x_in) {
   }
   for (int e = 0; e < system.num_entities(); ++e) com[e] = center_of_mass(system.entity(e), data[e]);
   jacobians_ready_ = false;
+  torque_values_ready_ = false;
   torques_ready_ = false;
 }
 
@@ -173,16 +189,50 @@ void NlpState::add_load(int entity, int link, const Eigen::Vector3d& p, const Ei
   const int ndof = E.model->num_dofs();
   auto dp = dtau_dp_.topRows(ndof);
   auto df = dtau_df_.topRows(ndof);
-  dp.setZero();
-  df.setZero();
+  const std::vector<int>& rows = link_dofs_[entity][link];  // only these rows are reached
+  for (int d : rows) {
+    dp.row(d).setZero();
+    df.row(d).setZero();
+  }
   add_point_load_torque(E, data[entity], link, p, sign * f, tau[entity], dtau_dq_[entity], dp, df);
   Eigen::MatrixXd& D = dtau_dx[entity];
-  // Chain rule through the load point (a vertex of s1, or a link's centre of mass) ...
-  const int point_entity = task >= 0 ? constants[task].e1 : entity;
-  if (Jp.cols() > 0) D.middleCols(scene.system.offset(point_entity), Jp.cols()).noalias() += dp * Jp;
-  // ... and through the force (contact forces only: gravity is constant).
-  if (task < 0) return;
-  for (int d = 0; d < ndof; ++d) add_force_term(task, vertex, sign * df.row(d).transpose(), D.row(d));
+  // Chain rule through the load point (a vertex of s1), over the
+  // columns that move the point only ...
+  const int point_entity = constants[task].e1;
+  const int point_link = constants[task].l1;
+  const int offset = scene.system.offset(point_entity);
+  for (int c : link_columns_[point_entity][point_link])
+    for (int d : rows) D(d, offset + c) += dp.row(d).dot(Jp.col(c));
+  // ... and through the force.
+  for (int d : rows) add_force_term(task, vertex, sign * df.row(d).transpose(), D.row(d));
+}
+
+// Calls visit(entity, link, point, force, sign, task, vertex) for every contact load a robot
+// receives: +f on s1's entity, -f on s2's entity, both at s1's vertex (E18).
+template <class LoadVisitor>
+void NlpState::for_each_load(LoadVisitor visit) {
+  const System& system = scene.system;
+  for (size_t t = 0; t < frames.size(); ++t) {
+    if (layout.force_block_of_task[t] < 0) continue;
+    const ContactConstants& c = constants[t];
+    const ContactFrames& fr = frames[t];
+    for (size_t j = 0; j < fr.p.size(); ++j) {
+      if (system.entity(c.e1).model->num_dofs() > 0) visit(c.e1, c.l1, fr.p[j], fr.f[j], 1.0, int(t), int(j));
+      if (system.entity(c.e2).model->num_dofs() > 0) visit(c.e2, c.l2, fr.p[j], fr.f[j], -1.0, int(t), int(j));
+    }
+  }
+}
+
+void NlpState::ensure_torque_values() {
+  if (torque_values_ready_) return;
+  for (int e = 0; e < scene.system.num_entities(); ++e) {
+    tau[e].setZero();
+    if (tau[e].size() > 0) add_gravity_torque_values(scene.system.entity(e), data[e], scene.gravity, tau[e]);
+  }
+  for_each_load([&](int e, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f, double sign, int, int) {
+    add_point_load_torque_value(scene.system.entity(e), data[e], link, p, sign * f, tau[e]);
+  });
+  torque_values_ready_ = true;
 }
 
 void NlpState::ensure_torques() {
@@ -193,34 +243,14 @@ void NlpState::ensure_torques() {
     tau[e].setZero();
     dtau_dx[e].setZero();
     dtau_dq_[e].setZero();
+    if (tau[e].size() > 0) add_gravity_torques(system.entity(e), data[e], scene.gravity, tau[e], dtau_dq_[e]);
   }
-  // Contact forces: +f on s1's entity, -f on s2's entity, both at s1's vertex (E18).
-  for (size_t t = 0; t < frames.size(); ++t) {
-    if (layout.force_block_of_task[t] < 0) continue;
-    const ContactConstants& c = constants[t];
-    const ContactFrames& fr = frames[t];
-    for (size_t j = 0; j < fr.p.size(); ++j) {
-      if (system.entity(c.e1).model->num_dofs() > 0)
-        add_load(c.e1, c.l1, fr.p[j], fr.f[j], 1.0, int(t), int(j), fr.J_p[j]);
-      if (system.entity(c.e2).model->num_dofs() > 0)
-        add_load(c.e2, c.l2, fr.p[j], fr.f[j], -1.0, int(t), int(j), fr.J_p[j]);
-    }
-  }
-  // Gravity: m_i g received at every link's centre of mass.
-  for (int e = 0; e < system.num_entities(); ++e) {
-    const Entity& E = system.entity(e);
-    if (E.model->num_dofs() == 0) continue;
-    for (int i = 0; i < E.model->num_links(); ++i) {
-      const Inertial& inertial = E.model->links[i].inertial;
-      if (inertial.mass == 0.0) continue;
-      auto J = J_point_.leftCols(E.nq());
-      point_jacobian(E, data[e], i, inertial.p_LC, J);
-      add_load(e, i, data[e].T_WL[i] * inertial.p_LC, inertial.mass * scene.gravity, 1.0, -1, -1, J);
-    }
-  }
+  for_each_load([&](int e, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f, double sign, int task,
+                    int vertex) { add_load(e, link, p, f, sign, task, vertex, frames[task].J_p[vertex]); });
   for (int e = 0; e < system.num_entities(); ++e)
     if (dtau_dq_[e].size() > 0)
       dtau_dx[e].middleCols(system.offset(e), system.entity(e).nq()) += dtau_dq_[e];
+  torque_values_ready_ = true;
   torques_ready_ = true;
 }
 

@@ -42,6 +42,7 @@ class NlpState {
 
   void set_x(const double* x);  // kinematics, frames, forces
   void ensure_jacobians();      // frame/vertex/generator/CoM Jacobians at the current x
+  void ensure_torque_values();  // tau only
   void ensure_torques();        // tau and dtau/dx (calls ensure_jacobians)
 
   // row.segment(offset(entity), nq) += c^T J for a 3 x nq Jacobian J over `entity`'s segment.
@@ -72,11 +73,19 @@ class NlpState {
                 double sign, int task, int vertex,
                 const Eigen::Ref<const Eigen::MatrixXd>& J_p);
 
+  template <class LoadVisitor>
+  void for_each_load(LoadVisitor visit);
+
   bool jacobians_ready_ = false;
+  bool torque_values_ready_ = false;
   bool torques_ready_ = false;
+  // Per entity and link: the dofs of the movable joints above the link (the only torque rows a
+  // load on it reaches) and the entity-local columns that move it (the only nonzero Jacobian
+  // columns of a point on it).
+  std::vector<std::vector<std::vector<int>>> link_dofs_, link_columns_;
   // Scratch for torque assembly.
   std::vector<Eigen::MatrixXd> dtau_dq_;  // per entity ndof x nq
-  Eigen::MatrixXd dtau_dp_, dtau_df_, J_point_;
+  Eigen::MatrixXd dtau_dp_, dtau_df_;
 };
 
 }  // namespace stanceplan

@@ -18,7 +18,7 @@ double Objective::value(NlpState& state) const {
   double f = o.w_configuration * (state.x.head(nq) - q_ref_).squaredNorm();  // E22
   f += o.w_force * state.x.tail(state.layout.n - nq).squaredNorm();         // E23
   if (o.w_torque > 0.0) {
-    state.ensure_torques();
+    state.ensure_torque_values();
     for (const Eigen::VectorXd& tau : state.tau) f += o.w_torque * tau.squaredNorm();  // E24
   }
   for (int t : targeted_tasks_) {  // E25 (obj4)

@@ -44,6 +44,10 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
     m_ += block->rows();
   }
   J_.setZero(m_, layout_.n);
+  H_.setZero(layout_.n, layout_.n);
+  grad_.setZero(layout_.n);
+  grad_step_.setZero(layout_.n);
+  x_step_.setZero(layout_.n);
 }
 
 void PostureNlp::variable_bounds(double* lower, double* upper) const {
@@ -135,6 +139,76 @@ const Eigen::MatrixXd& PostureNlp::dense_jacobian(const double* x, bool new_x) {
 void PostureNlp::jacobian_values(const double* x, bool new_x, double* values) {
   dense_jacobian(x, new_x);
   for (size_t k = 0; k < rows_.size(); ++k) values[k] = J_(rows_[k], cols_[k]);
+}
+
+}  // namespace stanceplan
+
+namespace stanceplan {
+
+void PostureNlp::hessian_structure(int* rows, int* cols) const {
+  int k = 0;
+  for (int i = 0; i < n(); ++i)
+    for (int j = 0; j <= i; ++j) {
+      rows[k] = i;
+      cols[k] = j;
+      ++k;
+    }
+}
+
+void PostureNlp::lagrangian_gradient(double obj_factor, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                     Eigen::Ref<Eigen::VectorXd> out) {
+  // Signed distance is only piecewise smooth (its witness features jump, e.g. between parallel
+  // faces): differencing its gradient gives meaningless curvature, so collision rows are given
+  // none, as in Gauss-Newton. Every other family is smooth.
+  J_.setZero();
+  for (size_t b = 0; b < blocks_.size(); ++b)
+    if (blocks_[b]->family() != "collision")
+      blocks_[b]->jacobian(state_, J_.middleRows(first_row_[b], blocks_[b]->rows()));
+  objective_.gradient(state_, out);
+  out *= obj_factor;
+  out.noalias() += J_.transpose() * y;
+}
+
+void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, const double* y_in,
+                                double* values) {
+  update(x, new_x);
+  const Eigen::Map<const Eigen::VectorXd> y(y_in, m_);
+  const int nq = layout_.nq;
+  lagrangian_gradient(obj_factor, y, grad_);
+  H_.setZero();
+  // Forward differences of the exact gradient along each configuration direction give the
+  // q-q block and the lambda-q block (columns k < nq).
+  x_step_ = Eigen::Map<const Eigen::VectorXd>(x, n());
+  for (int k = 0; k < nq; ++k) {
+    const double h = 1e-7 * std::max(1.0, std::abs(x_step_[k]));
+    const double saved = x_step_[k];
+    x_step_[k] = saved + h;
+    state_.set_x(x_step_.data());
+    lagrangian_gradient(obj_factor, y, grad_step_);
+    H_.col(k) = (grad_step_ - grad_) / h;
+    x_step_[k] = saved;
+  }
+  state_.set_x(x);  // later calls with new_x = false expect the state at x
+  // lambda-lambda: the constraints are linear in lambda; the objective contributes
+  // 2 w_force I + 2 w_torque (dtau/dlambda)^T (dtau/dlambda).
+  const SolverOptions& o = state_.options;
+  const int nl = n() - nq;
+  if (nl > 0) {
+    auto Hll = H_.bottomRightCorner(nl, nl);
+    Hll.diagonal().array() += obj_factor * 2.0 * o.w_force;
+    if (o.w_torque > 0.0) {
+      state_.ensure_torques();
+      for (const Eigen::MatrixXd& D : state_.dtau_dx)
+        if (D.size() > 0) Hll.noalias() += obj_factor * 2.0 * o.w_torque * D.rightCols(nl).transpose() * D.rightCols(nl);
+    }
+  }
+  int k = 0;
+  for (int i = 0; i < n(); ++i)
+    for (int j = 0; j <= i; ++j) {
+      // Symmetrise the differenced q-q block; below it, column j < nq of row i >= nq is d/dq_j of
+      // the lambda-gradient, exact up to the difference error.
+      values[k++] = (i < nq) ? 0.5 * (H_(i, j) + H_(j, i)) : H_(i, j);
+    }
 }
 
 }  // namespace stanceplan

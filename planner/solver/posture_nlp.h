@@ -34,6 +34,11 @@ class PostureNlp {
   void objective_gradient(const double* x, bool new_x, double* grad);
   void constraints(const double* x, bool new_x, double* g);
   void jacobian_values(const double* x, bool new_x, double* values);
+  // Hessian of the Lagrangian obj_factor f + y^T g, lower triangle, dense over (q, lambda) in
+  // row-major order of (i >= j). See HessianMode::FiniteDifference.
+  int hessian_nnz() const { return n() * (n() + 1) / 2; }
+  void hessian_structure(int* rows, int* cols) const;
+  void hessian_values(const double* x, bool new_x, double obj_factor, const double* y, double* values);
   // The dense Jacobian (m x n), for tests.
   const Eigen::MatrixXd& dense_jacobian(const double* x, bool new_x);
 
@@ -47,7 +52,13 @@ class PostureNlp {
   std::vector<int> first_row_;
   int m_ = 0;
   std::vector<int> rows_, cols_;
+  // Gradient of the Lagrangian at the state's current x.
+  void lagrangian_gradient(double obj_factor, const Eigen::Ref<const Eigen::VectorXd>& y,
+                           Eigen::Ref<Eigen::VectorXd> out);
+
   Eigen::MatrixXd J_;
+  Eigen::MatrixXd H_;
+  Eigen::VectorXd grad_, grad_step_, x_step_;
   bool has_x_ = false;
 };
 

@@ -5,6 +5,8 @@
 //   case 2 (remove c): every contact of sigma touched, c unloaded.
 #include <Eigen/Core>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "planner/contact/contact.h"
@@ -26,6 +28,11 @@ struct PostureRequest {
   Eigen::VectorXd q_ref;   // milestone configuration of the objective (E21); empty: q_init
 };
 
+// How Ipopt gets second derivatives: its limited-memory (L-BFGS) approximation, or the Hessian of
+// the Lagrangian from forward differences of the exact analytic gradient along the configuration
+// directions (the lambda-lambda block is exact: every constraint is linear in lambda).
+enum class HessianMode { LimitedMemory, FiniteDifference };
+
 struct SolverOptions {
   double friction = 1.0;        // Coulomb coefficient mu of every unilateral contact
   int cone_generators = 4;      // K: generators of the linearised friction cone (E5)
@@ -37,6 +44,7 @@ struct SolverOptions {
   double collision_margin = 0.005;   // E20: signed distance >= margin (m)
   double collision_active_distance = 0.05;  // pairs closer than this enter the program
   int max_active_set_rounds = 4;     // re-solves when a pair outside the active set penetrates
+  HessianMode hessian = HessianMode::FiniteDifference;
   int max_iterations = 300;
   double tolerance = 1e-6;           // constraint violation and complementarity (Ipopt)
   double optimality_tolerance = 1e-4;  // Ipopt tol / dual_inf_tol (the objective is a regulariser)
@@ -49,6 +57,8 @@ struct SolverOptions {
   // two more solves per failure: on for single postures, off in the search.
   bool diagnose_infeasibility = false;
   int print_level = 0;               // Ipopt's console output (0 = silent, 5 = per iteration)
+  // Further Ipopt options by name, applied last (values parsed as integer, number or string).
+  std::vector<std::pair<std::string, std::string>> ipopt_options;
 };
 
 }  // namespace stanceplan

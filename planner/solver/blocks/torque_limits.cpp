@@ -38,7 +38,7 @@ void TorqueLimitBlock::row_columns(int, std::vector<int>* columns) const {
 }
 
 void TorqueLimitBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const {
-  state.ensure_torques();
+  state.ensure_torque_values();
   for (int r = 0; r < rows(); ++r) g[r] = state.tau[entity_][dofs_[r]] / efforts_[r];
 }
 

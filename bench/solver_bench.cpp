@@ -1,0 +1,118 @@
+// Solve time of the IK-statics program on the humanoid with 2, 3 and 4 contacts (feet on the
+// floor, palms on the wall), cold (from the standing guess) and warm (from the solution of the
+// same stance with the robot shifted by 2 cm), as the solver issue asks. Run:
+//   build/bench/solver_bench --benchmark_repetitions=20 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include "planner/solver/posture_nlp.h"
+#include "planner/solver/posture_solver.h"
+#include "tests/support/scenes.h"
+
+namespace stanceplan {
+namespace {
+
+const Scene& scene() {
+  static const Scene s = test::humanoid_scene("wall");
+  return s;
+}
+
+PostureRequest request(int contacts) {
+  const Scene& s = scene();
+  PostureRequest r;
+  r.contacts = {test::task(s, "robot/l_sole", "env/floor"), test::task(s, "robot/r_sole", "env/floor")};
+  if (contacts >= 3) r.contacts.push_back(test::task(s, "robot/r_palm", "env/wall"));
+  if (contacts >= 4) r.contacts.push_back(test::task(s, "robot/l_palm", "env/wall"));
+  r.q_init = test::standing_configuration(s);
+  const Model& m = *s.system.entity(0).model;
+  for (const char* side : {"r_", "l_"}) {
+    if (contacts < (side[0] == 'r' ? 3 : 4)) continue;
+    r.q_init[7 + m.find_dof(std::string(side) + "shoulder_p")] = -1.4;
+    r.q_init[7 + m.find_dof(std::string(side) + "wrist_p")] = -1.2;
+  }
+  r.q_ref = r.q_init;
+  return r;
+}
+
+// STANCEPLAN_IPOPT="name=value,name=value" passes Ipopt options through (for experiments).
+SolverOptions options() {
+  SolverOptions o;
+  if (const char* h = std::getenv("STANCEPLAN_HESSIAN"); h && std::string(h) == "lbfgs") o.hessian = HessianMode::LimitedMemory;
+  if (const char* env = std::getenv("STANCEPLAN_IPOPT")) {
+    std::string text = env;
+    size_t start = 0;
+    while (start < text.size()) {
+      const size_t end = std::min(text.find(',', start), text.size());
+      const std::string item = text.substr(start, end - start);
+      const size_t eq = item.find('=');
+      if (eq != std::string::npos) o.ipopt_options.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+      start = end + 1;
+    }
+  }
+  return o;
+}
+
+void report(benchmark::State& state, const PostureResult& result) {
+  state.counters["iterations"] = result.iterations;
+  state.counters["solved"] = result.status == PostureStatus::Solved;
+}
+
+void BM_Cold(benchmark::State& state) {
+  const PostureSolver solver(scene(), options());
+  const PostureRequest r = request(int(state.range(0)));
+  PostureResult result;
+  for (auto _ : state) result = solver.solve(r);
+  report(state, result);
+}
+
+void BM_Warm(benchmark::State& state) {
+  const PostureSolver solver(scene(), options());
+  PostureRequest r = request(int(state.range(0)));
+  const PostureResult first = solver.solve(r);
+  r.q_init = first.q;
+  r.q_init[0] += 0.02;  // a nearby guess, as the search's parent node gives
+  r.q_ref = first.q;
+  PostureResult result;
+  for (auto _ : state) result = solver.solve(r);
+  report(state, result);
+}
+
+double p95(const std::vector<double>& v) {
+  std::vector<double> s = v;
+  std::sort(s.begin(), s.end());
+  return s[std::min(s.size() - 1, static_cast<size_t>(0.95 * s.size()))];
+}
+
+BENCHMARK(BM_Cold)->DenseRange(2, 4)->Unit(benchmark::kMillisecond)->ComputeStatistics("p95", p95);
+BENCHMARK(BM_Warm)->DenseRange(2, 4)->Unit(benchmark::kMillisecond)->ComputeStatistics("p95", p95);
+
+}  // namespace
+}  // namespace stanceplan
+
+namespace stanceplan {
+namespace {
+
+// One evaluation of every constraint Jacobian and the objective gradient (what a Lagrangian
+// gradient costs), for the 2- and 4-contact programs.
+void BM_JacobianEvaluation(benchmark::State& state) {
+  const PostureRequest r = request(int(state.range(0)));
+  const SolverOptions o = options();
+  PostureSolver solver(scene(), o);
+  PostureNlp nlp(scene(), r, o, {});
+  Eigen::VectorXd x(nlp.n()), grad(nlp.n());
+  nlp.starting_point(x.data());
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(nlp.dense_jacobian(x.data(), true).data());
+    nlp.objective_gradient(x.data(), false, grad.data());
+  }
+  state.counters["n"] = nlp.n();
+  state.counters["m"] = nlp.m();
+  state.counters["nnz"] = nlp.nnz();
+}
+BENCHMARK(BM_JacobianEvaluation)->Arg(2)->Arg(4)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace stanceplan
