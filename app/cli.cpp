@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "app/inspect_command.h"
+#include "app/plan_command.h"
 #include "app/posture_command.h"
 #include "planner/util/input_error.h"
 
@@ -36,6 +37,20 @@ void add_posture(CLI::App& cli, PostureOptions& options) {
   cmd->add_option("--out", options.out, "plan file to write (default: standard output)");
 }
 
+void add_plan(CLI::App& cli, PlanOptions& options) {
+  CLI::App* cmd = cli.add_subcommand("plan", "Plan a scenario: a sequence of stances with transition postures. "
+                                             "Exit 2 when no plan is found");
+  cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")->required();
+  cmd->add_option("--out", options.out, "plan file to write (default: plan.json)");
+  cmd->add_option("--threads", options.threads, "candidate solves in parallel (default: the number of cores)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--time-limit", options.time_limit, "seconds before giving up (default: the scenario's)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-nodes", options.max_nodes, "expanded nodes before giving up (default: the scenario's)")
+      ->check(CLI::Range(1, 100000000));
+  cmd->add_flag("--verbose", options.verbose, "print every search event on stderr");
+}
+
 }  // namespace
 
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -46,6 +61,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_inspect(cli, inspect);
   PostureOptions posture;
   add_posture(cli, posture);
+  PlanOptions plan;
+  add_plan(cli, plan);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -58,6 +75,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   try {
     if (cli.got_subcommand("inspect")) return run_inspect(inspect, out, err);
     if (cli.got_subcommand("posture")) return run_posture(posture, out, err);
+    if (cli.got_subcommand("plan")) return run_plan(plan, out, err);
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;

@@ -30,6 +30,13 @@ struct Placement {
   double theta = 0.0;
 };
 
+// A contact touched at some configuration, and whether it carries force there (a plan step's
+// "contacts", a search event's candidate).
+struct PlanContact {
+  Contact contact;
+  bool loaded = true;
+};
+
 class Stance {
  public:
   Stance() = default;

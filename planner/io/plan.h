@@ -13,11 +13,6 @@
 
 namespace stanceplan {
 
-struct PlanContact {
-  Contact contact;
-  bool loaded = true;
-};
-
 struct PlanStep {
   std::string action = "initial";  // initial | add | remove
   std::optional<Contact> changed;

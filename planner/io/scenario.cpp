@@ -339,7 +339,15 @@ class ScenarioReader {
 
   void read_search(const YAML::Node& node, Scenario& s) const {
     if (!node) return;
-    expect_keys(node, "search", {"max_nodes", "time_limit", "milestone_tolerance", "threads"});
+    expect_keys(node, "search", {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
+                                 "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
+                                 "max_retries"});
+    if (node["contact_reach"]) s.search.contact_reach = positive(node["contact_reach"], "search.contact_reach");
+    if (node["self_contacts"]) s.search.self_contacts = boolean(node["self_contacts"], "search.self_contacts");
+    if (node["placement_tolerance"]) s.search.placement_tolerance = positive(node["placement_tolerance"], "search.placement_tolerance");
+    if (node["orientation_tolerance"]) s.search.orientation_tolerance = positive(node["orientation_tolerance"], "search.orientation_tolerance");
+    if (node["stance_weight"]) s.search.stance_weight = number(node["stance_weight"], "search.stance_weight");
+    if (node["max_retries"]) s.search.max_retries = integer(node["max_retries"], "search.max_retries", 0);
     if (node["max_nodes"]) s.search.max_nodes = integer(node["max_nodes"], "search.max_nodes", 1);
     if (node["time_limit"]) s.search.time_limit_s = positive(node["time_limit"], "search.time_limit");
     if (node["milestone_tolerance"]) s.search.milestone_tolerance = positive(node["milestone_tolerance"], "search.milestone_tolerance");

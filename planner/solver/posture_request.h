@@ -45,7 +45,7 @@ struct SolverOptions {
   double collision_active_distance = 0.05;  // pairs closer than this enter the program
   int max_active_set_rounds = 4;     // re-solves when a pair outside the active set penetrates
   HessianMode hessian = HessianMode::FiniteDifference;
-  int max_iterations = 300;
+  int max_iterations = 100;
   double tolerance = 1e-6;           // constraint violation and complementarity (Ipopt)
   double optimality_tolerance = 1e-4;  // Ipopt tol / dual_inf_tol (the objective is a regulariser)
   bool derivative_test = false;      // Ipopt's first-order derivative checker (tests only)

@@ -126,12 +126,31 @@ void PostureSolver::validate(const PostureRequest& request) const {
 std::vector<bool> PostureSolver::excluded_pairs(const PostureRequest& request) const {
   std::vector<bool> excluded(scene_.collision ? scene_.collision->pairs().size() : 0, false);
   if (!scene_.collision) return excluded;
+  const CollisionModel& model = *scene_.collision;
+  // Links touching through a contact of the request.
   for (const ContactTask& task : request.contacts) {
     const Contact& c = task.contact;
-    const int p = scene_.collision->find_pair(c.s1.entity, scene_.surfaces.get(c.s1).link, c.s2.entity,
-                                              scene_.surfaces.get(c.s2).link);
+    const int p = model.find_pair(c.s1.entity, scene_.surfaces.get(c.s1).link, c.s2.entity,
+                                  scene_.surfaces.get(c.s2).link);
     if (p >= 0) excluded[p] = true;
   }
+  // Links whose pose this request fixes: never moving, or pinned to a non-moving body by a contact
+  // with a fixed placement (E8-E13 fix all 6 relative degrees of freedom). Between two such links
+  // the distance is a constant of the program: its row would only repeat the contact equalities
+  // (a degenerate, rank-deficient constraint), so it is left out.
+  std::vector<char> fixed_pose(model.links().size(), 0);
+  for (size_t i = 0; i < model.links().size(); ++i) fixed_pose[i] = !model.links()[i].moves;
+  for (const ContactTask& task : request.contacts) {
+    if (!task.placement) continue;
+    const Contact& c = task.contact;
+    const int a = model.find_link(c.s1.entity, scene_.surfaces.get(c.s1).link);
+    const int b = model.find_link(c.s2.entity, scene_.surfaces.get(c.s2).link);
+    if (a < 0 || b < 0) continue;
+    if (!model.links()[b].moves) fixed_pose[a] = 1;
+    if (!model.links()[a].moves) fixed_pose[b] = 1;
+  }
+  for (size_t p = 0; p < model.pairs().size(); ++p)
+    if (fixed_pose[model.pairs()[p].a] && fixed_pose[model.pairs()[p].b]) excluded[p] = true;
   return excluded;
 }
 

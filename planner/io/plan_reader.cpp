@@ -1,0 +1,305 @@
+#include "planner/io/plan_reader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "planner/util/input_error.h"
+
+namespace stanceplan {
+namespace fs = std::filesystem;
+namespace {
+
+using nlohmann::json;
+
+class PlanReader {
+ public:
+  PlanReader(const std::string& path, const PlanReadOptions& options) : path_(path), options_(options) {
+    dir_ = fs::absolute(fs::path(path)).parent_path();
+  }
+
+  LoadedPlan read() {
+    const json root = load();
+    LoadedPlan out;
+    out.file = path_;
+    if (!root.is_object()) fail("", "expected a JSON object");
+    if (string(root, "format", "") != "stanceplan/plan@1")
+      fail("format", "expected \"stanceplan/plan@1\", found \"" + string(root, "format", "") + "\"");
+    out.scenario = root.contains("scenario") && root["scenario"].is_string() ? root["scenario"].get<std::string>() : "";
+    out.spec.gravity = vector3(member(root, "gravity", ""), "gravity");
+    out.friction = number(member(root, "friction", ""), "friction");
+    read_entities(member(root, "entities", ""), out.spec);
+    read_ignored(root, out);
+    out.spec.collision = options_.build_collision;
+    out.spec.ignored_pairs = out.ignored_pairs;
+    // Surfaces come from the plan itself (the checker must not depend on the surface files).
+    std::vector<EntitySpec> without_surface_files = out.spec.entities;
+    for (EntitySpec& e : without_surface_files) e.surfaces.clear();
+    SceneSpec build = out.spec;
+    build.entities = without_surface_files;
+    out.scene = build_scene(build);
+    read_surfaces(member(root, "surfaces", ""), out.scene);
+    const json& steps = member(root, "steps", "");
+    if (!steps.is_array()) fail("steps", "expected an array");
+    for (size_t i = 0; i < steps.size(); ++i)
+      out.plan.steps.push_back(read_step(steps[i], "steps[" + std::to_string(i) + "]", out.scene));
+    if (root.contains("stats") && root["stats"].is_object()) {
+      const json& s = root["stats"];
+      out.plan.stats.nodes_expanded = s.value("nodes_expanded", 0);
+      out.plan.stats.solver_calls = s.value("solver_calls", 0);
+      out.plan.stats.wall_time_s = s.value("wall_time_s", 0.0);
+      out.plan.stats.threads = s.value("threads", 1);
+    }
+    return out;
+  }
+
+ private:
+  json load() const {
+    std::ifstream in(path_);
+    if (!in) throw InputError(path_ + ": cannot be read (no such file or no permission)");
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+      return json::parse(text.str());
+    } catch (const json::parse_error& e) {
+      throw InputError(path_ + ": not valid JSON: " + e.what());
+    }
+  }
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw InputError(path_ + ": " + (field.empty() ? "" : field + ": ") + what);
+  }
+
+  const json& member(const json& parent, const std::string& key, const std::string& field) const {
+    const std::string f = field.empty() ? key : field + "." + key;
+    if (!parent.is_object() || !parent.contains(key)) fail(f, "missing");
+    return parent.at(key);
+  }
+
+  std::string string(const json& parent, const std::string& key, const std::string& field) const {
+    const json& v = member(parent, key, field);
+    if (!v.is_string()) fail(field.empty() ? key : field + "." + key, "expected a string");
+    return v.get<std::string>();
+  }
+
+  double number(const json& v, const std::string& field) const {
+    if (!v.is_number()) fail(field, "expected a number");
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) fail(field, "expected a finite number");
+    return d;
+  }
+
+  Eigen::Vector3d vector3(const json& v, const std::string& field) const {
+    if (!v.is_array() || v.size() != 3) fail(field, "expected [x, y, z]");
+    return {number(v[0], field + "[0]"), number(v[1], field + "[1]"), number(v[2], field + "[2]")};
+  }
+
+  std::string path_of(const std::string& relative) const {
+    const fs::path p(relative);
+    return (p.is_absolute() ? p : dir_ / p).lexically_normal().string();
+  }
+
+  void read_entities(const json& list, SceneSpec& spec) const {
+    if (!list.is_array() || list.empty()) fail("entities", "expected a non-empty array");
+    for (size_t i = 0; i < list.size(); ++i) {
+      const std::string f = "entities[" + std::to_string(i) + "]";
+      const json& e = list[i];
+      EntitySpec out;
+      out.name = string(e, "name", f);
+      const std::string kind = string(e, "kind", f);
+      if (!parse_entity_kind(kind, &out.kind)) fail(f + ".kind", "expected floating, fixed, object or environment, found \"" + kind + "\"");
+      out.urdf = path_of(string(e, "urdf", f));
+      if (e.contains("package_paths")) {
+        if (!e["package_paths"].is_array()) fail(f + ".package_paths", "expected an array of folders");
+        for (const json& p : e["package_paths"]) {
+          if (!p.is_string()) fail(f + ".package_paths", "expected an array of folders");
+          out.package_paths.push_back(path_of(p.get<std::string>()));
+        }
+      }
+      if (e.contains("base_pose")) {
+        const json& pose = e["base_pose"];
+        out.T_WB.translation() = vector3(member(pose, "position", f + ".base_pose"), f + ".base_pose.position");
+        const json& q = member(pose, "orientation_wxyz", f + ".base_pose");
+        if (!q.is_array() || q.size() != 4) fail(f + ".base_pose.orientation_wxyz", "expected [w, x, y, z]");
+        Eigen::Quaterniond quat(number(q[0], f), number(q[1], f), number(q[2], f), number(q[3], f));
+        if (quat.norm() < 1e-9) fail(f + ".base_pose.orientation_wxyz", "a zero quaternion is no orientation");
+        out.T_WB.linear() = quat.normalized().toRotationMatrix();
+      }
+      spec.entities.push_back(out);
+    }
+  }
+
+  void read_ignored(const json& root, LoadedPlan& out) const {
+    if (!root.contains("collision_pairs_ignored")) return;
+    const json& list = root["collision_pairs_ignored"];
+    if (!list.is_array()) fail("collision_pairs_ignored", "expected an array of [entity/link, entity/link]");
+    for (size_t i = 0; i < list.size(); ++i) {
+      const std::string f = "collision_pairs_ignored[" + std::to_string(i) + "]";
+      if (!list[i].is_array() || list[i].size() < 2 || !list[i][0].is_string() || !list[i][1].is_string())
+        fail(f, "expected [entity/link, entity/link]");
+      LinkName names[2];
+      for (int k = 0; k < 2; ++k) {
+        const std::string id = list[i][k].get<std::string>();
+        const size_t slash = id.find('/');
+        if (slash == std::string::npos) fail(f, "expected \"entity/link\", found \"" + id + "\"");
+        names[k] = {id.substr(0, slash), id.substr(slash + 1)};
+      }
+      out.ignored_pairs.emplace_back(names[0], names[1]);
+    }
+  }
+
+  void read_surfaces(const json& list, Scene& scene) const {
+    if (!list.is_array()) fail("surfaces", "expected an array");
+    std::vector<std::vector<Surface>> per_entity(scene.system.num_entities());
+    for (size_t i = 0; i < list.size(); ++i) {
+      const std::string f = "surfaces[" + std::to_string(i) + "]";
+      const json& s = list[i];
+      const std::string id = string(s, "id", f);
+      const std::string entity_name = string(s, "entity", f);
+      const int e = scene.system.find_entity(entity_name);
+      if (e < 0) fail(f + ".entity", "no entity \"" + entity_name + "\"");
+      if (id.rfind(entity_name + "/", 0) != 0) fail(f + ".id", "\"" + id + "\" does not start with \"" + entity_name + "/\"");
+      const std::string link_name = string(s, "link", f);
+      const int link = scene.system.entity(e).model->find_link(link_name);
+      if (link < 0) fail(f + ".link", "model \"" + scene.system.entity(e).model->name + "\" has no link \"" + link_name + "\"");
+      const json& rotation = member(s, "rotation", f);
+      if (!rotation.is_array() || rotation.size() != 3) fail(f + ".rotation", "expected a 3x3 array of rows");
+      Eigen::Matrix3d R;
+      for (int r = 0; r < 3; ++r) R.row(r) = vector3(rotation[r], f + ".rotation[" + std::to_string(r) + "]");
+      const json& vertices = member(s, "vertices", f);
+      if (!vertices.is_array()) fail(f + ".vertices", "expected an array of [x, y, z]");
+      std::vector<Eigen::Vector3d> v;
+      for (size_t k = 0; k < vertices.size(); ++k) v.push_back(vector3(vertices[k], f + ".vertices[" + std::to_string(k) + "]"));
+      Surface surface;
+      std::string error;
+      const Eigen::Vector3d x_axis = R.col(0), normal = R.col(2);
+      // 1e-6 m: the plan writes vertices at full precision.
+      if (!make_surface(id.substr(entity_name.size() + 1), link, link_name, v, normal, &x_axis, &surface, &error, 1e-6))
+        fail(f, error);
+      per_entity[e].push_back(surface);
+    }
+    scene.surfaces = SurfaceSet(scene.system.num_entities());
+    for (int e = 0; e < scene.system.num_entities(); ++e) scene.surfaces.set(e, std::move(per_entity[e]));
+  }
+
+  SurfaceRef surface_ref(const json& v, const std::string& field, const Scene& scene) const {
+    if (!v.is_string()) fail(field, "expected a surface id");
+    const auto ref = scene.surfaces.find(scene.system, v.get<std::string>());
+    if (!ref) fail(field, "no surface \"" + v.get<std::string>() + "\" in the plan's surfaces");
+    return *ref;
+  }
+
+  Contact contact(const json& c, const std::string& field, const Scene& scene) const {
+    Contact out;
+    out.s1 = surface_ref(member(c, "s1", field), field + ".s1", scene);
+    out.s2 = surface_ref(member(c, "s2", field), field + ".s2", scene);
+    return out;
+  }
+
+  Eigen::VectorXd configuration(const json& c, const std::string& field, const Scene& scene) const {
+    const System& system = scene.system;
+    Eigen::VectorXd q = system.neutral_configuration();
+    for (int e = 0; e < system.num_entities(); ++e) {
+      const Entity& entity = system.entity(e);
+      if (entity.kind == EntityKind::Environment) continue;
+      const std::string f = field + "." + entity.name;
+      const json& ec = member(c, entity.name, field);
+      const int offset = system.offset(e);
+      if (entity.floating()) {
+        q.segment<3>(offset) = vector3(member(ec, "base_position", f), f + ".base_position");
+        const json& quat = member(ec, "base_orientation_wxyz", f);
+        if (!quat.is_array() || quat.size() != 4) fail(f + ".base_orientation_wxyz", "expected [w, x, y, z]");
+        for (int k = 0; k < 4; ++k) q[offset + 3 + k] = number(quat[k], f + ".base_orientation_wxyz");
+      }
+      const Model& model = *entity.model;
+      const json& joints = model.num_dofs() > 0 ? member(ec, "joints", f) : json::object();
+      for (int k = 0; k < model.num_dofs(); ++k) {
+        const std::string& name = model.joints[model.dof_joints[k]].name;
+        if (!joints.contains(name)) fail(f + ".joints", "missing joint \"" + name + "\"");
+        q[offset + entity.first_dof() + k] = number(joints[name], f + ".joints." + name);
+      }
+    }
+    return q;
+  }
+
+  PlanStep read_step(const json& s, const std::string& field, const Scene& scene) const {
+    PlanStep step;
+    step.action = string(s, "action", field);
+    if (step.action != "initial" && step.action != "add" && step.action != "remove")
+      fail(field + ".action", "expected initial, add or remove, found \"" + step.action + "\"");
+    if (s.contains("changed_contact") && !s["changed_contact"].is_null())
+      step.changed = contact(s["changed_contact"], field + ".changed_contact", scene);
+    const json& contacts = member(s, "contacts", field);
+    if (!contacts.is_array()) fail(field + ".contacts", "expected an array");
+    for (size_t i = 0; i < contacts.size(); ++i) {
+      const std::string f = field + ".contacts[" + std::to_string(i) + "]";
+      PlanContact pc{contact(contacts[i], f, scene), contacts[i].value("loaded", true)};
+      pc.contact.bilateral = contacts[i].value("bilateral", false);
+      pc.contact.fixed = contacts[i].value("fixed", false);
+      step.contacts.push_back(pc);
+    }
+    std::vector<Contact> stance;
+    const json& st = member(s, "stance", field);
+    if (!st.is_array()) fail(field + ".stance", "expected an array");
+    for (size_t i = 0; i < st.size(); ++i) {
+      Contact c = contact(st[i], field + ".stance[" + std::to_string(i) + "]", scene);
+      for (const PlanContact& pc : step.contacts)
+        if (pc.contact.same_surfaces(c)) c = pc.contact;  // carry the bilateral / fixed tags
+      stance.push_back(c);
+    }
+    step.stance = Stance(stance);
+    step.q = configuration(member(s, "configuration", field), field + ".configuration", scene);
+    const json& forces = member(s, "forces", field);
+    if (!forces.is_array()) fail(field + ".forces", "expected an array");
+    for (size_t i = 0; i < forces.size(); ++i) {
+      const std::string f = field + ".forces[" + std::to_string(i) + "]";
+      const Contact c = contact(forces[i], f, scene);
+      VertexForce vf;
+      for (size_t k = 0; k < step.contacts.size(); ++k)
+        if (step.contacts[k].contact.same_surfaces(c)) vf.contact = int(k);
+      if (vf.contact < 0) fail(f, "the force's contact is not among the step's contacts");
+      vf.point_W = vector3(member(forces[i], "point_world", f), f + ".point_world");
+      vf.force_W = vector3(member(forces[i], "force_world", f), f + ".force_world");
+      step.forces.push_back(vf);
+    }
+    step.torques.resize(scene.system.num_entities());
+    if (s.contains("torques")) {
+      const json& torques = s["torques"];
+      for (int e = 0; e < scene.system.num_entities(); ++e) {
+        const Entity& entity = scene.system.entity(e);
+        const Model& model = *entity.model;
+        if (model.num_dofs() == 0 || !torques.contains(entity.name)) continue;
+        step.torques[e] = Eigen::VectorXd::Zero(model.num_dofs());
+        for (int k = 0; k < model.num_dofs(); ++k) {
+          const std::string& name = model.joints[model.dof_joints[k]].name;
+          const std::string f = field + ".torques." + entity.name;
+          if (!torques[entity.name].contains(name)) fail(f, "missing joint \"" + name + "\"");
+          step.torques[e][k] = number(torques[entity.name][name], f + "." + name);
+        }
+      }
+    }
+    if (s.contains("solver") && s["solver"].is_object()) {
+      step.iterations = s["solver"].value("iterations", 0);
+      step.time_ms = s["solver"].value("time_ms", 0.0);
+      step.objective = s["solver"].value("objective", 0.0);
+    }
+    return step;
+  }
+
+  std::string path_;
+  PlanReadOptions options_;
+  fs::path dir_;
+};
+
+}  // namespace
+
+LoadedPlan read_plan(const std::string& path, const PlanReadOptions& options) {
+  LoadedPlan out = PlanReader(path, options).read();
+  out.scene.gravity = out.spec.gravity;
+  return out;
+}
+
+}  // namespace stanceplan

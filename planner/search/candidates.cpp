@@ -1,0 +1,115 @@
+#include "planner/search/candidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stanceplan {
+namespace {
+
+std::vector<Eigen::Vector3d> world_vertices(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef r) {
+  const Surface& s = scene.surfaces.get(r);
+  std::vector<Eigen::Vector3d> out;
+  for (const Eigen::Vector3d& v : s.vertices_L()) out.push_back(data[r.entity].T_WL[s.link] * v);
+  return out;
+}
+
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-18), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+// Distance from p to a convex polygon (counter-clockwise about `normal`).
+double point_polygon_distance(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& poly,
+                              const Eigen::Vector3d& normal) {
+  const int n = static_cast<int>(poly.size());
+  bool inside = true;
+  for (int i = 0; i < n; ++i)
+    if ((poly[(i + 1) % n] - poly[i]).cross(p - poly[i]).dot(normal) < 0.0) inside = false;
+  if (inside) return std::abs((p - poly[0]).dot(normal));
+  double d = INFINITY;
+  for (int i = 0; i < n; ++i) d = std::min(d, point_segment_distance(p, poly[i], poly[(i + 1) % n]));
+  return d;
+}
+
+// A floating body with mass must keep at least one contact on it.
+bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int removed) {
+  const Contact& c = stance.contacts()[removed];
+  for (SurfaceRef r : {c.s1, c.s2}) {
+    const Entity& e = scene.system.entity(r.entity);
+    if (!e.floating() || e.model->total_mass <= 0.0) continue;
+    bool other = false;
+    for (int i = 0; i < stance.size(); ++i)
+      if (i != removed && (stance.contacts()[i].s1.entity == r.entity || stance.contacts()[i].s2.entity == r.entity))
+        other = true;
+    if (!other) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool link_is_static(const Scene& scene, int entity, int link) {
+  const Entity& e = scene.system.entity(entity);
+  if (e.floating()) return false;
+  const Model& model = *e.model;
+  for (int l = link; l > 0; l = model.links[l].parent_link)
+    if (model.joints[model.links[l].parent_joint].movable()) return false;
+  return true;
+}
+
+double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a, SurfaceRef b) {
+  const auto va = world_vertices(scene, data, a), vb = world_vertices(scene, data, b);
+  const Surface& sa = scene.surfaces.get(a);
+  const Surface& sb = scene.surfaces.get(b);
+  const Eigen::Vector3d na = data[a.entity].T_WL[sa.link].linear() * sa.normal_L();
+  const Eigen::Vector3d nb = data[b.entity].T_WL[sb.link].linear() * sb.normal_L();
+  double d = INFINITY;
+  for (const auto& p : va) d = std::min(d, point_polygon_distance(p, vb, nb));
+  for (const auto& p : vb) d = std::min(d, point_polygon_distance(p, va, na));
+  return d;
+}
+
+std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,
+                                            const Stance& stance, const Stance& goal,
+                                            const SearchOptions& options) {
+  std::vector<Candidate> out;
+  // Adj-: remove one contact (case 2).
+  for (int i = 0; i < stance.size(); ++i) {
+    const Contact& c = stance.contacts()[i];
+    if (c.fixed || leaves_a_body_unsupported(scene, stance, i)) continue;
+    out.push_back({false, c});
+  }
+  // Adj+: one candidate per pair of surfaces (case 1).
+  std::vector<SurfaceRef> all;
+  for (int e = 0; e < scene.system.num_entities(); ++e)
+    for (int k = 0; k < int(scene.surfaces.of(e).size()); ++k) all.push_back({e, k});
+  auto used_as_s1 = [&](SurfaceRef r) {
+    return std::any_of(stance.contacts().begin(), stance.contacts().end(), [&](const Contact& c) { return c.s1 == r; });
+  };
+  for (size_t i = 0; i < all.size(); ++i)
+    for (size_t j = i + 1; j < all.size(); ++j) {
+      SurfaceRef a = all[i], b = all[j];
+      const Surface& sa = scene.surfaces.get(a);
+      const Surface& sb = scene.surfaces.get(b);
+      if (a.entity == b.entity && sa.link == sb.link) continue;
+      if (a.entity == b.entity && !options.self_contacts) continue;
+      if (link_is_static(scene, a.entity, sa.link) && link_is_static(scene, b.entity, sb.link)) continue;
+      Contact c;
+      // s1 is the smaller surface, unless the goal states the pair the other way round.
+      c.s1 = sa.area() <= sb.area() ? a : b;
+      c.s2 = sa.area() <= sb.area() ? b : a;
+      const int in_goal = goal.find(c);
+      Contact reversed = c;
+      std::swap(reversed.s1, reversed.s2);
+      const int in_goal_reversed = goal.find(reversed);
+      if (in_goal >= 0) c = goal.contacts()[in_goal];
+      else if (in_goal_reversed >= 0) c = goal.contacts()[in_goal_reversed];
+      if (stance.find(c) >= 0 || stance.uses_surface(c.s1) || used_as_s1(c.s2)) continue;
+      if (surface_gap(scene, data, c.s1, c.s2) > options.contact_reach) continue;
+      out.push_back({true, c});
+    }
+  return out;
+}
+
+}  // namespace stanceplan

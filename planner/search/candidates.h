@@ -1,0 +1,41 @@
+#pragma once
+// Adj+ and Adj- of a stance (METHOD.md section 2): the candidate contacts to add (one per class of
+// equivalent stances: a pair of surfaces, the solver picks the placement) and to remove, after the
+// pruning rules below. Each rule either cannot remove a feasible transition, or is a documented
+// option of SearchOptions:
+//  - same link: a contact needs two links (exact);
+//  - both surfaces on bodies that never move (the environment, a fixed robot's base): their
+//    relative placement is constant, so the contact is either always or never there (exact);
+//  - a surface already in the stance as s1, or s2 already the s1 of a contact (stance rule);
+//  - removing the last contact that supports a floating body with mass: no equilibrium is
+//    possible without support (exact), and fixed contacts are never removed (METHOD.md);
+//  - two surfaces of one entity unless SearchOptions::self_contacts (option);
+//  - surfaces farther apart than SearchOptions::contact_reach at the node's configuration: one
+//    transition moves a link by a bounded amount (option).
+#include <vector>
+
+#include "planner/contact/contact.h"
+#include "planner/model/model_data.h"
+#include "planner/scene/scene.h"
+#include "planner/search/search_options.h"
+
+namespace stanceplan {
+
+struct Candidate {
+  bool add = true;     // case 1 (add `contact`) or case 2 (remove `contact`)
+  Contact contact;
+};
+
+// `data` holds forward kinematics of every entity at the node's configuration. `goal` supplies the
+// orientation (which surface is s1) and the bilateral/fixed tags of contacts it contains.
+std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,
+                                            const Stance& stance, const Stance& goal,
+                                            const SearchOptions& options);
+
+// Distance between two surfaces' polygons in the world (0 when they touch or cross).
+double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a, SurfaceRef b);
+
+// True when a link's pose never depends on the configuration.
+bool link_is_static(const Scene& scene, int entity, int link);
+
+}  // namespace stanceplan

@@ -1,0 +1,33 @@
+#pragma once
+// The guide path of METHOD.md section 3: milestone configurations q_ref,1..M and the distance the
+// search's cost is measured in. A global milestone index t advances when the tree holds a
+// configuration within tolerance of milestone t.
+#include <Eigen/Core>
+#include <vector>
+
+#include "planner/model/system.h"
+
+namespace stanceplan {
+
+struct GuideMetric {
+  double position = 1.0;     // weight of root positions (per metre)
+  double orientation = 0.5;  // weight of root orientations (per radian of rotation angle)
+  double joints = 0.1;       // weight of joint positions (per radian or metre)
+};
+
+class GuidePath {
+ public:
+  GuidePath(const System& system, std::vector<Eigen::VectorXd> milestones, GuideMetric metric = {});
+
+  int size() const { return static_cast<int>(milestones_.size()); }
+  const Eigen::VectorXd& milestone(int t) const { return milestones_.at(t); }
+  // Weighted configuration distance (root position, root rotation angle, joints).
+  double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
+
+ private:
+  const System& system_;
+  std::vector<Eigen::VectorXd> milestones_;
+  GuideMetric metric_;
+};
+
+}  // namespace stanceplan

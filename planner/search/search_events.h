@@ -1,0 +1,62 @@
+#pragma once
+// What the search tells its observers (the snapshot writer, the GUI, the progress line), and the
+// step gate through which an observer can hold the search between events. The planner knows
+// nothing of windows or images: observers are plain callbacks.
+#include <Eigen/Core>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <string>
+
+#include "planner/contact/contact.h"
+#include "planner/solver/posture_result.h"
+
+namespace stanceplan {
+
+enum class SearchEventKind { Expansion, Candidate, Milestone, PlanFound, Failure };
+const char* to_string(SearchEventKind kind);
+
+enum class CandidateCase { None, Add, Remove };  // METHOD.md case 1 / case 2
+
+struct SearchEvent {
+  int number = 0;  // 0, 1, 2, ... in the order the search publishes them
+  SearchEventKind kind = SearchEventKind::Expansion;
+  int node = -1;         // the node expanded, created, reaching the milestone, or the goal node
+  int parent = -1;       // candidates: the node being expanded
+  Stance stance;         // the node's stance, or the candidate's target stance
+  CandidateCase candidate_case = CandidateCase::None;
+  Contact changed;       // candidates: the contact added or removed
+  PostureStatus status = PostureStatus::Solved;  // candidates
+  std::string message;   // candidates: why rejected; failure: why
+  bool accepted = false; // candidates: a new node was made
+  Eigen::VectorXd q;     // the configuration (candidates: the solver's final iterate)
+  std::vector<PlanContact> contacts;  // touched at q, with which carry force
+  std::vector<VertexForce> forces;    // VertexForce::contact indexes `contacts`
+  double time_ms = 0.0;  // candidates: solver time
+  int milestone = 0;     // the milestone index targeted after this event
+  int nodes = 0;         // tree size after this event
+};
+
+using SearchObserver = std::function<void(const SearchEvent&)>;
+
+// Holds the search between events while paused. The search calls pass() before publishing each
+// event; pause() / step(n) / resume() come from any other thread. cancel() releases a waiting search.
+class StepGate {
+ public:
+  void pause();
+  void resume();
+  void step(int events = 1);  // let `events` more events through, then pause again
+  void cancel();
+  bool paused() const;
+  // Blocks while paused (unless cancelled); returns false once cancelled.
+  bool pass();
+
+ private:
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  bool paused_ = false;
+  bool cancelled_ = false;
+  int budget_ = 0;
+};
+
+}  // namespace stanceplan

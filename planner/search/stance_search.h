@@ -1,0 +1,78 @@
+#pragma once
+// The multi-contact stance planner of Bouyarmane & Kheddar, "Humanoid Robot Locomotion and
+// Manipulation Step Planning", Advanced Robotics 26(10), 2012 (METHOD.md section 3, Algorithm 1):
+// a greedy best-first search over stances. Each candidate (add a contact: case 1; remove one:
+// case 2) is checked by the IK-statics solver; the cost is the distance to the targeted milestone
+// of the guide path. Adds loop avoidance, backtracking, budgets, cancellation, events and a step
+// gate. Deterministic: the plan does not depend on the thread count.
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "planner/io/plan.h"
+#include "planner/io/scenario.h"
+#include "planner/search/guide_path.h"
+#include "planner/search/search_events.h"
+
+namespace stanceplan {
+
+enum class PlanStatus { Found, Exhausted, NodeBudget, TimeBudget, Cancelled, InitialInfeasible };
+const char* to_string(PlanStatus status);
+
+struct SearchNode {
+  int id = 0;
+  int parent = -1;
+  int depth = 0;
+  Stance stance;
+  std::vector<Placement> placements;  // per stance contact, realised at q
+  Eigen::VectorXd q;
+  int milestone = 0;                  // the milestone targeted when the node was made
+  // The transition that made it (PLAN_FORMAT.md step semantics).
+  std::string action = "initial";
+  Contact changed;
+  std::vector<PlanContact> contacts;
+  std::vector<VertexForce> forces;
+  std::vector<Eigen::VectorXd> torques;
+  int iterations = 0;
+  double time_ms = 0.0;
+  double objective = 0.0;
+};
+
+struct SearchResult {
+  PlanStatus status = PlanStatus::Exhausted;
+  std::string message;
+  Plan plan;                      // the sequence, when found
+  std::vector<SearchNode> tree;
+  int closest_node = -1;          // the node whose stance is closest to the goal's
+  int milestone = 0;              // milestones reached
+  int nodes_expanded = 0;
+  int solver_calls = 0;
+  double wall_time_s = 0.0;
+  double solver_time_s = 0.0;     // summed over solves
+};
+
+class StanceSearch {
+ public:
+  StanceSearch(const Scenario& scenario, SearchOptions options);
+
+  void set_observer(SearchObserver observer) { observer_ = std::move(observer); }
+  void set_gate(StepGate* gate) { gate_ = gate; }
+  // Thread-safe: the search stops before its next solver call.
+  void cancel() { cancelled_ = true; }
+
+  SearchResult run();
+
+ private:
+  struct Attempt;
+  bool publish(SearchEvent event);
+  bool stopped() const { return cancelled_.load(); }
+
+  const Scenario& scenario_;
+  SearchOptions options_;
+  SearchObserver observer_;
+  StepGate* gate_ = nullptr;
+  std::atomic<bool> cancelled_{false};
+  int next_event_ = 0;
+};
+
+}  // namespace stanceplan
