@@ -4,6 +4,7 @@
 
 #include <ostream>
 
+#include "app/certify_command.h"
 #include "app/inspect_command.h"
 #include "app/plan_command.h"
 #include "app/posture_command.h"
@@ -63,6 +64,11 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_posture(cli, posture);
   PlanOptions plan;
   add_plan(cli, plan);
+  std::string certify_plan;
+  cli.add_subcommand("certify", "Re-check a plan from the plan file and the models alone (never the solver). "
+                                "Exit 2 when a check fails")
+      ->add_option("plan", certify_plan, "plan file (stanceplan/plan@1 JSON)")
+      ->required();
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -76,6 +82,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("inspect")) return run_inspect(inspect, out, err);
     if (cli.got_subcommand("posture")) return run_posture(posture, out, err);
     if (cli.got_subcommand("plan")) return run_plan(plan, out, err);
+    if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;

@@ -89,7 +89,9 @@ SearchResult StanceSearch::run() {
   const auto start = Clock::now();
   const Scene& scene = scenario_.scene;
   const System& system = scene.system;
-  const PostureSolver solver(scene, scenario_.solver);
+  SolverOptions solver_options = scenario_.solver;
+  solver_options.cancel = &cancelled_;
+  const PostureSolver solver(scene, solver_options);
   const Stance goal = scenario_.stance(scenario_.goal_stance);
   const GuidePath guide(system, scenario_.milestones);
   const int threads = options_.threads > 0 ? options_.threads : std::max(1u, std::thread::hardware_concurrency());

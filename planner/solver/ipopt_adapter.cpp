@@ -107,6 +107,13 @@ class PostureTnlp : public Ipopt::TNLP {
     return true;
   }
 
+  // Cancellation between iterations (the search's cancel flag).
+  bool intermediate_callback(Ipopt::AlgorithmMode, Ipopt::Index, Ipopt::Number, Ipopt::Number, Ipopt::Number,
+                             Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Number,
+                             Ipopt::Index, const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    return !(options_.cancel && options_.cancel->load());
+  }
+
   Eigen::VectorXd final_x;
   double final_objective = 0.0;
 
@@ -134,6 +141,7 @@ StatusInfo classify(Ipopt::ApplicationReturnStatus s) {
     case A::Error_In_Step_Computation: return {PostureStatus::NumericalFailure, "Error_In_Step_Computation"};
     case A::Invalid_Number_Detected: return {PostureStatus::NumericalFailure, "Invalid_Number_Detected"};
     case A::Not_Enough_Degrees_Of_Freedom: return {PostureStatus::NumericalFailure, "Not_Enough_Degrees_Of_Freedom"};
+    case A::User_Requested_Stop: return {PostureStatus::NumericalFailure, "cancelled"};
     default: return {PostureStatus::NumericalFailure, "Ipopt_Error"};
   }
 }

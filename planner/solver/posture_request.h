@@ -4,6 +4,7 @@
 //   case 1 (add c):    sigma's contacts loaded, c touched but unloaded with a free placement;
 //   case 2 (remove c): every contact of sigma touched, c unloaded.
 #include <Eigen/Core>
+#include <atomic>
 #include <optional>
 #include <string>
 #include <utility>
@@ -56,6 +57,8 @@ struct SolverOptions {
   // the family that makes the request infeasible (PostureResult::blocking_family). Costs up to
   // two more solves per failure: on for single postures, off in the search.
   bool diagnose_infeasibility = false;
+  // When set and true, a solve stops at its next iteration (status NumericalFailure, "cancelled").
+  const std::atomic<bool>* cancel = nullptr;
   int print_level = 0;               // Ipopt's console output (0 = silent, 5 = per iteration)
   // Further Ipopt options by name, applied last (values parsed as integer, number or string).
   std::vector<std::pair<std::string, std::string>> ipopt_options;

@@ -1,0 +1,264 @@
+#include "planner/certify/certify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "planner/collision/signed_distance.h"
+#include "planner/model/kinematics.h"
+
+namespace stanceplan {
+namespace {
+
+// PLAN_FORMAT.md tolerances.
+constexpr double kDistanceTol = 1e-3;              // m: on the plane, inside the polygon
+constexpr double kNormalTol = 0.5 * M_PI / 180.0;  // rad: normals opposed
+constexpr double kEquilibriumTol = 1e-3;           // x m|g|
+constexpr double kPenetrationTol = 1e-3;           // m
+// Not in PLAN_FORMAT.md: numerical slack for quantities the plan states at full precision.
+constexpr double kFrictionTol = 1e-6;  // N, plus 1e-6 relative
+constexpr double kTorqueTol = 1e-3;    // N m: stated torques against those implied
+constexpr double kLimitTol = 1e-6;     // rad or m beyond a joint limit
+
+class Checker {
+ public:
+  explicit Checker(const LoadedPlan& plan) : plan_(plan), scene_(plan.scene), system_(plan.scene.system) {}
+
+  CertifyReport run() {
+    const auto& steps = plan_.plan.steps;
+    for (size_t i = 0; i < steps.size(); ++i) check_step(int(i), steps[i], i > 0 ? &steps[i - 1] : nullptr);
+    if (steps.empty()) note("sequence", "", 1.0, 0.0, -1, "the plan has no step");
+    CertifyReport report;  // the checks that applied, in a fixed order
+    for (const char* name : kOrder)
+      if (checks_.count(name)) report.checks.push_back(checks_.at(name));
+    return report;
+  }
+
+ private:
+  static constexpr const char* kOrder[] = {"sequence", "contact plane", "contact polygon", "contact normals",
+                                           "force points", "equilibrium force", "equilibrium moment",
+                                           "unilateral", "friction", "joint limits", "torque limits",
+                                           "torque consistency", "quaternion norm", "interpenetration"};
+
+  // Keeps the worst violation of each check, with its step and what it was.
+  void note(const std::string& name, const std::string& unit, double violation, double tolerance, int step,
+            const std::string& detail) {
+    auto [it, inserted] = checks_.try_emplace(name, CheckResult{name, unit, 0.0, tolerance, step, ""});
+    CheckResult& c = it->second;
+    if (violation > c.worst || (std::isnan(violation) && !std::isnan(c.worst))) {
+      c.worst = std::isnan(violation) ? INFINITY : violation;
+      c.step = step;
+      c.detail = detail;
+    }
+  }
+
+  std::string id(SurfaceRef r) const { return scene_.surfaces.id(system_, r); }
+
+  // --- adjacency and step semantics (METHOD.md section 2)
+  void check_sequence(int i, const PlanStep& step, const PlanStep* previous) {
+    auto bad = [&](const std::string& why) { note("sequence", "", 1.0, 0.0, i, why); };
+    note("sequence", "", 0.0, 0.0, i, "");
+    std::vector<Contact> loaded, touched;
+    for (const PlanContact& c : step.contacts) {
+      touched.push_back(c.contact);
+      if (c.loaded) loaded.push_back(c.contact);
+    }
+    const Stance touched_stance(touched), loaded_stance(loaded);
+    if (!previous) {
+      if (step.action != "initial") bad("step 0 is not \"initial\"");
+      if (loaded.size() != touched.size()) bad("step 0 does not load every contact");
+      if (!(touched_stance == step.stance)) bad("step 0's contacts are not its stance");
+      return;
+    }
+    const Stance& before = previous->stance;
+    const Stance& after = step.stance;
+    if (!step.changed) return bad("no changed_contact");
+    const Contact& c = *step.changed;
+    if (step.action == "add") {
+      if (before.find(c) >= 0 || after.find(c) < 0 || after.size() != before.size() + 1 || !(after.without(after.find(c)) == before))
+        bad("stance " + std::to_string(i) + " is not stance " + std::to_string(i - 1) + " plus " + id(c.s1) + "-" + id(c.s2));
+      if (!(touched_stance == after) || !(loaded_stance == before)) bad("an add step must touch sigma_i and load sigma_{i-1}");
+    } else if (step.action == "remove") {
+      const int k = before.find(c);
+      if (k < 0 || after.find(c) >= 0 || !(before.without(k) == after))
+        bad("stance " + std::to_string(i) + " is not stance " + std::to_string(i - 1) + " minus " + id(c.s1) + "-" + id(c.s2));
+      else if (before.contacts()[k].fixed)
+        bad("the fixed contact " + id(c.s1) + "-" + id(c.s2) + " is removed");
+      if (!(touched_stance == before) || !(loaded_stance == after)) bad("a remove step must touch sigma_{i-1} and load sigma_i");
+    } else {
+      bad("action \"" + step.action + "\" after step 0");
+    }
+  }
+
+  // --- contact geometry of every touched contact
+  void check_contacts(int i, const PlanStep& step) {
+    for (const PlanContact& pc : step.contacts) {
+      const Contact& c = pc.contact;
+      const Surface& s1 = scene_.surfaces.get(c.s1);
+      const Surface& s2 = scene_.surfaces.get(c.s2);
+      const Eigen::Isometry3d T1 = data_[c.s1.entity].T_WL[s1.link] * s1.T_LS;
+      const Eigen::Isometry3d T2 = data_[c.s2.entity].T_WL[s2.link] * s2.T_LS;
+      const std::string name = id(c.s1) + " on " + id(c.s2);
+      const double angle = std::acos(std::clamp(-T1.linear().col(2).dot(T2.linear().col(2)), -1.0, 1.0));
+      note("contact normals", "rad", angle, kNormalTol, i, name);
+      const auto& poly = s2.vertices_S;
+      for (int v = 0; v < int(s1.vertices_S.size()); ++v) {
+        const Eigen::Vector3d p_S2 = T2.inverse() * (T1 * Eigen::Vector3d(s1.vertices_S[v].x(), s1.vertices_S[v].y(), 0.0));
+        note("contact plane", "m", std::abs(p_S2.z()), kDistanceTol, i, name + ", vertex " + std::to_string(v));
+        double outside = 0.0;
+        for (size_t e = 0; e < poly.size(); ++e) {
+          const Eigen::Vector2d a = poly[e], b = poly[(e + 1) % poly.size()];
+          const Eigen::Vector2d edge = (b - a).normalized();
+          const Eigen::Vector2d inward(-edge.y(), edge.x());
+          outside = std::max(outside, -inward.dot(p_S2.head<2>() - a));
+        }
+        note("contact polygon", "m", outside, kDistanceTol, i, name + ", vertex " + std::to_string(v));
+      }
+    }
+  }
+
+  // --- forces: where they act, unilaterality, friction
+  void check_forces(int i, const PlanStep& step) {
+    for (const VertexForce& f : step.forces) {
+      const PlanContact& pc = step.contacts[f.contact];
+      const std::string name = id(pc.contact.s1) + " on " + id(pc.contact.s2);
+      if (!pc.loaded) note("force points", "m", 1.0, kDistanceTol, i, name + " carries force but is not loaded");
+      const Surface& s1 = scene_.surfaces.get(pc.contact.s1);
+      double nearest = INFINITY;
+      for (const Eigen::Vector3d& v : s1.vertices_L())
+        nearest = std::min(nearest, (data_[pc.contact.s1.entity].T_WL[s1.link] * v - f.point_W).norm());
+      note("force points", "m", nearest, kDistanceTol, i, name + ": no vertex of s1 at the force's point");
+      if (pc.contact.bilateral) continue;
+      const Surface& s2 = scene_.surfaces.get(pc.contact.s2);
+      const Eigen::Vector3d n = data_[pc.contact.s2.entity].T_WL[s2.link].linear() * s2.normal_L();
+      const double fn = f.force_W.dot(n);
+      const double ft = (f.force_W - fn * n).norm();
+      note("unilateral", "N", std::max(0.0, -fn), kFrictionTol, i, name);
+      note("friction", "N", std::max(0.0, ft - plan_.friction * fn - 1e-6 * f.force_W.norm()), kFrictionTol, i, name);
+    }
+  }
+
+  // --- E16-E17 for every floating robot and object
+  void check_equilibrium(int i, const PlanStep& step) {
+    for (int e = 0; e < system_.num_entities(); ++e) {
+      const Entity& entity = system_.entity(e);
+      if (!entity.floating() || entity.model->total_mass <= 0.0) continue;
+      const Eigen::Vector3d weight = entity.model->total_mass * scene_.gravity;
+      Eigen::Vector3d force = weight, moment = center_of_mass(entity, data_[e]).cross(weight);
+      for (const VertexForce& f : step.forces) {
+        const Contact& c = step.contacts[f.contact].contact;
+        const double sign = (c.s1.entity == e ? 1.0 : 0.0) - (c.s2.entity == e ? 1.0 : 0.0);
+        force += sign * f.force_W;
+        moment += sign * f.point_W.cross(f.force_W);
+      }
+      const double scale = entity.model->total_mass * scene_.gravity.norm();
+      note("equilibrium force", "m|g|", force.norm() / scale, kEquilibriumTol, i, entity.name);
+      note("equilibrium moment", "m|g| m", moment.norm() / scale, kEquilibriumTol, i, entity.name);
+    }
+  }
+
+  // --- joint limits, torque limits and tau + sum J^T f + J_com^T m g = 0
+  void check_joints(int i, const PlanStep& step) {
+    for (int e = 0; e < system_.num_entities(); ++e) {
+      const Entity& entity = system_.entity(e);
+      const Model& model = *entity.model;
+      if (entity.floating())
+        note("quaternion norm", "", std::abs(step.q.segment<4>(system_.offset(e) + 3).norm() - 1.0), 1e-6, i, entity.name);
+      if (model.num_dofs() == 0) continue;
+      const int first = system_.offset(e) + entity.first_dof();
+      for (int k = 0; k < model.num_dofs(); ++k) {
+        const Joint& joint = model.joints[model.dof_joints[k]];
+        if (!joint.has_position_limits) continue;
+        const double v = step.q[first + k];
+        note("joint limits", "rad|m", std::max({0.0, joint.lower - v, v - joint.upper}), kLimitTol, i, entity.name + "/" + joint.name);
+      }
+      if (entity.kind == EntityKind::Object) continue;
+      if (e >= int(step.torques.size()) || step.torques[e].size() != model.num_dofs()) {
+        note("torque consistency", "N m", INFINITY, kTorqueTol, i, entity.name + ": no torques in the plan");
+        continue;
+      }
+      const Eigen::VectorXd implied = implied_torques(e, step);
+      for (int k = 0; k < model.num_dofs(); ++k) {
+        const Joint& joint = model.joints[model.dof_joints[k]];
+        const double tau = step.torques[e][k];
+        if (joint.effort > 0.0)
+          note("torque limits", "x effort", std::max(0.0, std::abs(tau) / joint.effort - 1.0), 1e-6, i, entity.name + "/" + joint.name);
+        note("torque consistency", "N m", std::abs(tau - implied[k]), kTorqueTol, i, entity.name + "/" + joint.name);
+      }
+    }
+  }
+
+  // tau = -(sum over received forces J_p^T f + J_com^T m g), restricted to the joint columns.
+  Eigen::VectorXd implied_torques(int e, const PlanStep& step) const {
+    const Entity& entity = system_.entity(e);
+    Eigen::MatrixXd J(3, entity.nq());
+    Eigen::VectorXd generalized = Eigen::VectorXd::Zero(entity.nq());
+    for (const VertexForce& f : step.forces) {
+      const Contact& c = step.contacts[f.contact].contact;
+      for (const auto& [ref, sign] : {std::pair{c.s1, 1.0}, std::pair{c.s2, -1.0}}) {
+        if (ref.entity != e) continue;
+        point_jacobian_world(entity, data_[e], scene_.surfaces.get(ref).link, f.point_W, J);
+        generalized += sign * J.transpose() * f.force_W;
+      }
+    }
+    center_of_mass_jacobian(entity, data_[e], J);
+    generalized += J.transpose() * (entity.model->total_mass * scene_.gravity);
+    return -generalized.tail(entity.model->num_dofs());
+  }
+
+  // --- no interpenetration beyond 1 mm, except pairs touching through a contact of this step
+  void check_collisions(int i, const PlanStep& step) {
+    if (!scene_.collision) return;
+    const CollisionModel& model = *scene_.collision;
+    CollisionData work(system_, model);
+    work.update(model, data_);
+    for (int p = 0; p < int(model.pairs().size()); ++p) {
+      const CollisionLink& a = model.links()[model.pairs()[p].a];
+      const CollisionLink& b = model.links()[model.pairs()[p].b];
+      bool touching = false;
+      for (const PlanContact& pc : step.contacts) {
+        const int la = scene_.surfaces.get(pc.contact.s1).link, lb = scene_.surfaces.get(pc.contact.s2).link;
+        const int ea = pc.contact.s1.entity, eb = pc.contact.s2.entity;
+        if ((a.entity == ea && a.link == la && b.entity == eb && b.link == lb) ||
+            (a.entity == eb && a.link == lb && b.entity == ea && b.link == la))
+          touching = true;
+      }
+      if (touching) continue;
+      const double d = signed_distance(model, work, p).distance;
+      const auto name = [&](const CollisionLink& l) {
+        return system_.entity(l.entity).name + "/" + system_.entity(l.entity).model->links[l.link].name;
+      };
+      note("interpenetration", "m", std::max(0.0, -d), kPenetrationTol, i, name(a) + " and " + name(b));
+    }
+  }
+
+  void check_step(int i, const PlanStep& step, const PlanStep* previous) {
+    data_.clear();
+    for (int e = 0; e < system_.num_entities(); ++e) {
+      data_.emplace_back(system_.entity(e));
+      forward_kinematics(system_.entity(e), step.q.segment(system_.offset(e), system_.entity(e).nq()), data_.back());
+    }
+    check_sequence(i, step, previous);
+    check_contacts(i, step);
+    check_forces(i, step);
+    check_equilibrium(i, step);
+    check_joints(i, step);
+    check_collisions(i, step);
+  }
+
+  const LoadedPlan& plan_;
+  const Scene& scene_;
+  const System& system_;
+  std::vector<ModelData> data_;
+  std::map<std::string, CheckResult> checks_;
+};
+
+}  // namespace
+
+bool CertifyReport::passed() const {
+  return std::all_of(checks.begin(), checks.end(), [](const CheckResult& c) { return c.passed(); });
+}
+
+CertifyReport certify(const LoadedPlan& plan) { return Checker(plan).run(); }
+
+}  // namespace stanceplan

@@ -1,0 +1,123 @@
+// `stanceplan certify` accepts a real plan and rejects tampered ones, naming the failing check.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/cli.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan {
+namespace {
+
+using nlohmann::json;
+using ::testing::HasSubstr;
+
+struct CliResult {
+  int code;
+  std::string out, err;
+};
+
+CliResult run(std::vector<std::string> args) {
+  args.insert(args.begin(), "stanceplan");
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  const int code = app::run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {code, out.str(), err.str()};
+}
+
+class Certify : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    path_ = new std::string(::testing::TempDir() + "certify_walk.json");
+    const CliResult r = run({"plan", test::source_path("scenarios/humanoid_walk.yaml"), "--out", *path_, "--threads", "1"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::ifstream in(*path_);
+    plan_ = new json(json::parse(in));
+  }
+  static void TearDownTestSuite() {
+    delete plan_;
+    delete path_;
+  }
+  // Writes a tampered copy and certifies it.
+  static CliResult certify_modified(const std::function<void(json&)>& change, const std::string& name) {
+    json copy = *plan_;
+    change(copy);
+    const std::string path = ::testing::TempDir() + "tampered_" + name + ".json";
+    std::ofstream(path) << copy.dump();
+    return run({"certify", path});
+  }
+  static std::string* path_;
+  static json* plan_;
+};
+std::string* Certify::path_ = nullptr;
+json* Certify::plan_ = nullptr;
+
+TEST_F(Certify, TheRealPlanPasses) {
+  const CliResult r = run({"certify", *path_});
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("all checks passed"));
+  EXPECT_THAT(r.out, HasSubstr("torque consistency"));
+}
+
+TEST_F(Certify, AJointPastItsLimitFails) {
+  const CliResult r = certify_modified([](json& p) { p["steps"][3]["configuration"]["robot"]["joints"]["l_knee_p"] = 2.7; }, "limit");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("certification failed: joint limits at step 3: robot/l_knee_p"));
+}
+
+TEST_F(Certify, AForceScaledByTwoFails) {
+  const CliResult r = certify_modified([](json& p) {
+    for (auto& v : p["steps"][2]["forces"][0]["force_world"]) v = v.get<double>() * 2.0;
+  }, "force");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("certification failed: equilibrium force at step 2: robot"));
+}
+
+TEST_F(Certify, AStepRemovedFromTheSequenceFails) {
+  const CliResult r = certify_modified([](json& p) { p["steps"].erase(4); }, "step");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("certification failed: sequence at step 4"));
+}
+
+TEST_F(Certify, AContactSurfaceMovedFiveCentimetresOffFails) {
+  const CliResult r = certify_modified([](json& p) {
+    for (auto& s : p["surfaces"])
+      if (s["id"] == "robot/l_sole") {
+        for (auto& v : s["vertices"]) v[2] = v[2].get<double>() + 0.05;  // 5 cm into the foot
+        s["origin"][2] = s["origin"][2].get<double>() + 0.05;
+      }
+  }, "vertex");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("certification failed: contact plane at step"));
+}
+
+TEST_F(Certify, AForcePointMovedOffItsVertexFails) {
+  const CliResult r = certify_modified([](json& p) {
+    auto& point = p["steps"][1]["forces"][2]["point_world"];
+    point[0] = point[0].get<double>() + 0.05;
+  }, "point");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("certification failed: force points at step 1"));
+}
+
+TEST_F(Certify, AnUnreadablePlanIsBadInput) {
+  const CliResult r = run({"certify", "/nonexistent/plan.json"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "stanceplan: error: /nonexistent/plan.json: cannot be read (no such file or no permission)\n");
+}
+
+TEST(PlanCommand, AnUnreachableGoalExitsTwoWithAReason) {
+  const CliResult r = run({"plan", test::source_path("tests/data/high_platform/unreachable.yaml"), "--out",
+                           ::testing::TempDir() + "unreachable.json", "--max-nodes", "4"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("stanceplan: no plan found ("));
+  EXPECT_THAT(r.err, HasSubstr("closest stance to the goal: {"));
+}
+
+}  // namespace
+}  // namespace stanceplan

@@ -1,0 +1,175 @@
+// The stance search on humanoid_walk.yaml (METHOD.md section 3) and its certification; budgets,
+// determinism across thread counts, cancellation and the step gate.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstring>
+#include <thread>
+
+#include "planner/certify/certify.h"
+#include "planner/io/plan_reader.h"
+#include "planner/io/plan_writer.h"
+#include "planner/search/stance_search.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+class Walk : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scenario_ = new Scenario(load_scenario(test::source_path("scenarios/humanoid_walk.yaml")));
+    SearchOptions options = scenario_->search;
+    options.threads = 1;
+    result_ = new SearchResult(StanceSearch(*scenario_, options).run());
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete scenario_;
+  }
+  static Scenario* scenario_;
+  static SearchResult* result_;
+};
+Scenario* Walk::scenario_ = nullptr;
+SearchResult* Walk::result_ = nullptr;
+
+// The plan without its timing fields, which are the only thing allowed to differ between runs.
+std::string timeless(const Plan& plan, const Scenario& scenario) {
+  Plan copy = plan;
+  copy.stats = {};
+  for (PlanStep& step : copy.steps) step.time_ms = 0.0;
+  return plan_to_json(copy, scenario, "/tmp/plan.json");
+}
+
+TEST_F(Walk, PlansAndTheCheckerCertifiesThePlan) {
+  ASSERT_EQ(result_->status, PlanStatus::Found) << result_->message;
+  const std::string path = ::testing::TempDir() + "walk_plan.json";
+  write_plan(result_->plan, *scenario_, path);
+  const CertifyReport report = certify(read_plan(path));
+  for (const CheckResult& c : report.checks) EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": " << c.detail;
+  EXPECT_TRUE(report.passed());
+  EXPECT_GE(report.checks.size(), 12u);
+}
+
+TEST_F(Walk, FeetAlternateAndTheRobotReachesTheGoal) {
+  ASSERT_EQ(result_->status, PlanStatus::Found);
+  const auto& steps = result_->plan.steps;
+  ASSERT_GE(steps.size(), 9u);  // at least 4 steps of a foot
+  const Scene& scene = scenario_->scene;
+  std::string last_moved;
+  for (size_t i = 1; i < steps.size(); ++i) {
+    const std::string foot = scene.surfaces.id(scene.system, steps[i].changed->s1);
+    EXPECT_TRUE(foot == "robot/l_sole" || foot == "robot/r_sole") << foot;
+    // A foot lifted (remove) is put down again by the next step (add), then the other foot moves.
+    if (i % 2 == 1) {
+      EXPECT_EQ(steps[i].action, "remove") << i;
+      EXPECT_NE(foot, last_moved) << "the same foot moved twice in a row at step " << i;
+    } else {
+      EXPECT_EQ(steps[i].action, "add") << i;
+      EXPECT_EQ(foot, scene.surfaces.id(scene.system, steps[i - 1].changed->s1));
+      last_moved = foot;
+    }
+    EXPECT_LE(steps[i].stance.size(), 2);
+    EXPECT_GE(steps[i].stance.size(), 1);
+  }
+  // The robot ends with both feet 1.5 m ahead of where it started.
+  EXPECT_NEAR(steps.back().q[0] - steps.front().q[0], 1.5, 0.1);
+  const auto data_end = steps.back().forces;
+  double mean_x = 0.0;
+  for (const VertexForce& f : data_end) mean_x += f.point_W.x() / data_end.size();
+  EXPECT_NEAR(mean_x, 1.5, 0.05);
+}
+
+TEST_F(Walk, SamePlanBitForBitForOneAndTwoThreadsAndTwoRuns) {
+  ASSERT_EQ(result_->status, PlanStatus::Found);
+  SearchOptions options = scenario_->search;
+  options.threads = 2;
+  const SearchResult two = StanceSearch(*scenario_, options).run();
+  options.threads = 1;
+  const SearchResult again = StanceSearch(*scenario_, options).run();
+  ASSERT_EQ(two.status, PlanStatus::Found);
+  ASSERT_EQ(again.status, PlanStatus::Found);
+  const std::string reference = timeless(result_->plan, *scenario_);
+  EXPECT_EQ(timeless(two.plan, *scenario_), reference);
+  EXPECT_EQ(timeless(again.plan, *scenario_), reference);
+  for (size_t i = 0; i < two.plan.steps.size(); ++i)
+    EXPECT_EQ(0, std::memcmp(two.plan.steps[i].q.data(), result_->plan.steps[i].q.data(), sizeof(double) * two.plan.steps[i].q.size()));
+}
+
+TEST(Search, AnUnreachableGoalEndsWithAReasonInsideItsBudget) {
+  const Scenario scenario = load_scenario(test::source_path("tests/data/high_platform/unreachable.yaml"));
+  SearchOptions options = scenario.search;
+  options.max_nodes = 6;
+  const auto start = Clock::now();
+  const SearchResult result = StanceSearch(scenario, options).run();
+  EXPECT_TRUE(result.status == PlanStatus::NodeBudget || result.status == PlanStatus::Exhausted) << to_string(result.status);
+  EXPECT_LE(result.nodes_expanded, 6);
+  EXPECT_FALSE(result.message.empty());
+  EXPECT_TRUE(result.plan.steps.empty());
+  EXPECT_GE(result.closest_node, 0);
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), options.time_limit_s);
+}
+
+TEST(Search, ACancelRequestStopsTheSearchWithin200Milliseconds) {
+  const Scenario scenario = load_scenario(test::source_path("tests/data/high_platform/unreachable.yaml"));
+  SearchOptions options = scenario.search;
+  options.max_nodes = 1000;
+  StanceSearch search(scenario, options);
+  SearchResult result;
+  Clock::time_point returned;
+  std::thread worker([&] {
+    result = search.run();
+    returned = Clock::now();
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));  // well inside the search
+  const auto cancelled = Clock::now();
+  search.cancel();
+  worker.join();
+  EXPECT_EQ(result.status, PlanStatus::Cancelled);
+  const double latency_ms = std::chrono::duration<double, std::milli>(returned - cancelled).count();
+  EXPECT_LE(latency_ms, 200.0);
+}
+
+// The step gate the GUI uses: while paused no event happens; step(1) lets exactly one through.
+TEST(Search, TheStepGateHoldsTheSearchBetweenEvents) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  StanceSearch search(scenario, scenario.search);
+  StepGate gate;
+  gate.pause();
+  search.set_gate(&gate);
+  std::mutex mutex;
+  std::vector<SearchEvent> events;
+  search.set_observer([&](const SearchEvent& e) {
+    std::lock_guard<std::mutex> lock(mutex);
+    events.push_back(e);
+  });
+  std::thread worker([&] { search.run(); });
+  auto count = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return events.size();
+  };
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  EXPECT_EQ(count(), 0u) << "an event happened while paused";
+  for (size_t k = 1; k <= 4; ++k) {
+    gate.step(1);
+    const auto deadline = Clock::now() + std::chrono::seconds(10);
+    while (count() < k && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::this_thread::sleep_for(std::chrono::milliseconds(150));
+    EXPECT_EQ(count(), k) << "step(1) must release exactly one event";
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (size_t k = 0; k < events.size(); ++k) EXPECT_EQ(events[k].number, int(k));
+    EXPECT_EQ(events[0].kind, SearchEventKind::Candidate);  // the root posture
+    EXPECT_EQ(events[1].kind, SearchEventKind::Expansion);
+  }
+  gate.resume();
+  worker.join();
+  EXPECT_EQ(events.back().kind, SearchEventKind::PlanFound);
+}
+
+}  // namespace
+}  // namespace stanceplan
