@@ -193,18 +193,21 @@ class ScenarioReader {
 
   // A (partial) configuration of entity e written into q: base pose and named joints.
   void read_configuration(const YAML::Node& node, const std::string& field, int e, Eigen::VectorXd& q,
-                          const Scene& scene) const {
+                          const Scene& scene, Eigen::VectorXd* stated = nullptr) const {
     expect_keys(node, field, {"base_position", "base_orientation_wxyz", "base_rpy", "joints"});
     const System& system = scene.system;
     const Entity& entity = system.entity(e);
     const int offset = system.offset(e);
     if (!entity.floating() && (node["base_position"] || node["base_orientation_wxyz"] || node["base_rpy"]))
       fail(node, field, "entity \"" + entity.name + "\" is not floating: give its base_pose instead");
-    if (node["base_position"])
+    if (node["base_position"]) {
       q.segment<3>(offset) = numbers(node["base_position"], join(field, "base_position"), 3, "[x, y, z]");
+      if (stated) stated->segment<3>(offset).setOnes();
+    }
     if (node["base_orientation_wxyz"] || node["base_rpy"]) {
       const Eigen::Quaterniond quat = orientation(node, field, "base_orientation_wxyz", "base_rpy");
       q.segment<4>(offset + 3) = Eigen::Vector4d(quat.w(), quat.x(), quat.y(), quat.z());
+      if (stated) stated->segment<4>(offset + 3).setOnes();
     }
     const YAML::Node joints = node["joints"];
     if (!joints) return;
@@ -225,6 +228,7 @@ class ScenarioReader {
         fail(item.second, f, std::to_string(value) + " is outside the joint's limits [" + std::to_string(joint.lower) +
                                  ", " + std::to_string(joint.upper) + "]");
       q[offset + entity.first_dof() + dof] = value;
+      if (stated) (*stated)[offset + entity.first_dof() + dof] = 1.0;
     }
   }
 
@@ -282,13 +286,21 @@ class ScenarioReader {
     for (size_t i = 0; i < node.size(); ++i) {
       const std::string f = "guide[" + std::to_string(i) + "]";
       if (!node[i].IsMap()) fail(node[i], f, "expected a mapping entity name: configuration");
+      double tolerance = 0.0;
+      Eigen::VectorXd stated = Eigen::VectorXd::Zero(q.size());
       for (const auto& item : node[i]) {
         const std::string name = item.first.as<std::string>();
+        if (name == "tolerance") {
+          tolerance = positive(item.second, f + ".tolerance");
+          continue;
+        }
         const int e = s.scene.system.find_entity(name);
         if (e < 0) fail(item.first, f + "." + name, "no entity \"" + name + "\"");
-        read_configuration(item.second, f + "." + name, e, q, s.scene);
+        read_configuration(item.second, f + "." + name, e, q, s.scene, &stated);
       }
       s.milestones.push_back(q);
+      s.milestone_masks.push_back(stated);
+      s.milestone_tolerances.push_back(tolerance);
     }
   }
 
@@ -341,7 +353,15 @@ class ScenarioReader {
     if (!node) return;
     expect_keys(node, "search", {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
                                  "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
-                                 "max_retries"});
+                                 "max_retries", "contact_pairs"});
+    if (const YAML::Node pairs = node["contact_pairs"]) {
+      if (!pairs.IsSequence()) fail(pairs, "search.contact_pairs", "expected a list of [s1 pattern, s2 pattern]");
+      for (size_t i = 0; i < pairs.size(); ++i) {
+        const std::string f = "search.contact_pairs[" + std::to_string(i) + "]";
+        if (!pairs[i].IsSequence() || pairs[i].size() != 2) fail(pairs[i], f, "expected [s1 pattern, s2 pattern]");
+        s.search.contact_pairs.emplace_back(text(pairs[i][0], f), text(pairs[i][1], f));
+      }
+    }
     if (node["contact_reach"]) s.search.contact_reach = positive(node["contact_reach"], "search.contact_reach");
     if (node["self_contacts"]) s.search.self_contacts = boolean(node["self_contacts"], "search.self_contacts");
     if (node["placement_tolerance"]) s.search.placement_tolerance = positive(node["placement_tolerance"], "search.placement_tolerance");

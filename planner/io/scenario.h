@@ -30,6 +30,10 @@ struct Scenario {
   std::vector<StanceContact> initial_stance;
   std::vector<StanceContact> goal_stance;
   std::vector<Eigen::VectorXd> milestones;  // full configurations, partial ones completed
+  std::vector<double> milestone_tolerances;  // per milestone; 0: search.milestone_tolerance
+  // Per milestone, 1 for every entry of q the milestone states (a partial milestone constrains
+  // only what it states; the rest of `milestones[i]` only completes the solver's reference).
+  std::vector<Eigen::VectorXd> milestone_masks;
   SolverOptions solver;
   SearchOptions search;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fnmatch.h>
 
 namespace stanceplan {
 namespace {
@@ -44,6 +45,16 @@ bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int rem
         other = true;
     if (!other) return true;
   }
+  return false;
+}
+
+bool allowed_pair(const Scene& scene, const Contact& c, const SearchOptions& options) {
+  if (options.contact_pairs.empty()) return true;
+  const std::string s1 = scene.surfaces.id(scene.system, c.s1), s2 = scene.surfaces.id(scene.system, c.s2);
+  for (const auto& [p1, p2] : options.contact_pairs)
+    if ((fnmatch(p1.c_str(), s1.c_str(), 0) == 0 && fnmatch(p2.c_str(), s2.c_str(), 0) == 0) ||
+        (fnmatch(p1.c_str(), s2.c_str(), 0) == 0 && fnmatch(p2.c_str(), s1.c_str(), 0) == 0))
+      return true;
   return false;
 }
 
@@ -106,6 +117,7 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       if (in_goal >= 0) c = goal.contacts()[in_goal];
       else if (in_goal_reversed >= 0) c = goal.contacts()[in_goal_reversed];
       if (stance.find(c) >= 0 || stance.uses_surface(c.s1) || used_as_s1(c.s2)) continue;
+      if (!allowed_pair(scene, c, options)) continue;
       if (surface_gap(scene, data, c.s1, c.s2) > options.contact_reach) continue;
       out.push_back({true, c});
     }

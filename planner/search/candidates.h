@@ -11,7 +11,8 @@
 //    possible without support (exact), and fixed contacts are never removed (METHOD.md);
 //  - two surfaces of one entity unless SearchOptions::self_contacts (option);
 //  - surfaces farther apart than SearchOptions::contact_reach at the node's configuration: one
-//    transition moves a link by a bounded amount (option).
+//    transition moves a link by a bounded amount (option);
+//  - pairs not matching SearchOptions::contact_pairs, when the scenario lists them (option).
 #include <vector>
 
 #include "planner/contact/contact.h"

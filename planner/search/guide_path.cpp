@@ -5,23 +5,36 @@
 
 namespace stanceplan {
 
-GuidePath::GuidePath(const System& system, std::vector<Eigen::VectorXd> milestones, GuideMetric metric)
-    : system_(system), milestones_(std::move(milestones)), metric_(metric) {}
+GuidePath::GuidePath(const System& system, std::vector<Eigen::VectorXd> milestones,
+                     std::vector<Eigen::VectorXd> masks, GuideMetric metric)
+    : system_(system), milestones_(std::move(milestones)), masks_(std::move(masks)), metric_(metric) {}
 
 double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
+  return distance(a, b, nullptr);
+}
+
+double GuidePath::distance_to(const Eigen::VectorXd& q, int t) const {
+  return distance(q, milestones_.at(t), t < int(masks_.size()) ? &masks_[t] : nullptr);
+}
+
+double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b, const Eigen::VectorXd* mask) const {
+  auto stated = [&](int i) { return mask == nullptr || (*mask)[i] > 0.0; };
   double sum = 0.0;
   for (int e = 0; e < system_.num_entities(); ++e) {
     const Entity& entity = system_.entity(e);
     const int o = system_.offset(e);
     if (entity.floating()) {
-      sum += std::pow(metric_.position * (a.segment<3>(o) - b.segment<3>(o)).norm(), 2);
-      const Eigen::Vector4d qa = a.segment<4>(o + 3).normalized(), qb = b.segment<4>(o + 3).normalized();
-      const double angle = 2.0 * std::acos(std::min(1.0, std::abs(qa.dot(qb))));  // q and -q: one rotation
-      sum += std::pow(metric_.orientation * angle, 2);
+      for (int i = 0; i < 3; ++i)
+        if (stated(o + i)) sum += std::pow(metric_.position * (a[o + i] - b[o + i]), 2);
+      if (stated(o + 3)) {
+        const Eigen::Vector4d qa = a.segment<4>(o + 3).normalized(), qb = b.segment<4>(o + 3).normalized();
+        const double angle = 2.0 * std::acos(std::min(1.0, std::abs(qa.dot(qb))));  // q and -q: one rotation
+        sum += std::pow(metric_.orientation * angle, 2);
+      }
     }
     const int first = o + entity.first_dof();
-    const int n = entity.model->num_dofs();
-    sum += std::pow(metric_.joints, 2) * (a.segment(first, n) - b.segment(first, n)).squaredNorm();
+    for (int k = 0; k < entity.model->num_dofs(); ++k)
+      if (stated(first + k)) sum += std::pow(metric_.joints * (a[first + k] - b[first + k]), 2);
   }
   return std::sqrt(sum);
 }

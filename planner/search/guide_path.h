@@ -17,16 +17,23 @@ struct GuideMetric {
 
 class GuidePath {
  public:
-  GuidePath(const System& system, std::vector<Eigen::VectorXd> milestones, GuideMetric metric = {});
+  // masks[i] (optional): 1 for the entries milestone i states; distances to it ignore the others.
+  GuidePath(const System& system, std::vector<Eigen::VectorXd> milestones,
+            std::vector<Eigen::VectorXd> masks = {}, GuideMetric metric = {});
 
   int size() const { return static_cast<int>(milestones_.size()); }
   const Eigen::VectorXd& milestone(int t) const { return milestones_.at(t); }
   // Weighted configuration distance (root position, root rotation angle, joints).
   double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
+  // Distance from q to milestone t over the entries it states.
+  double distance_to(const Eigen::VectorXd& q, int t) const;
 
  private:
   const System& system_;
+  double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b, const Eigen::VectorXd* mask) const;
+
   std::vector<Eigen::VectorXd> milestones_;
+  std::vector<Eigen::VectorXd> masks_;
   GuideMetric metric_;
 };
 

@@ -1,6 +1,10 @@
 #pragma once
 // Budgets and tolerances of the stance search (METHOD.md section 3), read from a scenario's
 // `search` section and overridable on the command line.
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace stanceplan {
 
 struct SearchOptions {
@@ -12,11 +16,15 @@ struct SearchOptions {
   // contacts between two surfaces of one entity only when self_contacts is true.
   double contact_reach = 0.45;
   bool self_contacts = false;
+  // When not empty, only these surface pairs are offered as new contacts: ("s1 id", "s2 id"),
+  // each a pattern where * matches any run of characters ("robot/*_sole", "env/floor").
+  std::vector<std::pair<std::string, std::string>> contact_pairs;
   // Loop avoidance: a stance is already in the tree when it has the same contacts at placements
   // within these tolerances.
   double placement_tolerance = 0.03;    // m
   double orientation_tolerance = 0.15;  // rad
-  // Cost: distance to the targeted milestone + stance_weight x |stance xor goal stance|.
+  // Cost: distance to the targeted milestone, plus stance_weight x |stance xor goal stance| once the
+  // last milestone is the target.
   double stance_weight = 0.1;
   // Backtracking: further attempts from other initial guesses per failed (node, candidate).
   int max_retries = 2;

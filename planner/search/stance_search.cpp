@@ -93,7 +93,7 @@ SearchResult StanceSearch::run() {
   solver_options.cancel = &cancelled_;
   const PostureSolver solver(scene, solver_options);
   const Stance goal = scenario_.stance(scenario_.goal_stance);
-  const GuidePath guide(system, scenario_.milestones);
+  const GuidePath guide(system, scenario_.milestones, scenario_.milestone_masks);
   const int threads = options_.threads > 0 ? options_.threads : std::max(1u, std::thread::hardware_concurrency());
   SearchResult result;
   std::vector<SearchNode>& tree = result.tree;
@@ -152,9 +152,17 @@ SearchResult StanceSearch::run() {
   tree.push_back(make_node(-1, root_request, root_result, scenario_.stance(scenario_.initial_stance), "initial", {}));
 
   int t = 0;  // the targeted milestone
+  auto milestone_tolerance = [&](int m) {
+    const auto& given = scenario_.milestone_tolerances;
+    return m < int(given.size()) && given[m] > 0.0 ? given[m] : options_.milestone_tolerance;
+  };
+  // The guide path ranks the nodes; the stance term only counts once the last milestone is the
+  // target (before that it would reward goal contacts made too early, e.g. hands on the desk while
+  // still walking to it).
   auto cost = [&](const SearchNode& n) {
-    const double d = guide.size() > 0 ? guide.distance(n.q, guide.milestone(t)) : 0.0;
-    return d + options_.stance_weight * stance_difference(n.stance, goal);
+    const double d = guide.size() > 0 ? guide.distance_to(n.q, t) : 0.0;
+    const bool final_approach = t + 1 >= guide.size();
+    return d + (final_approach ? options_.stance_weight * stance_difference(n.stance, goal) : 0.0);
   };
   auto is_goal = [&](const SearchNode& n) {
     if (stance_difference(n.stance, goal) != 0) return false;
@@ -195,7 +203,7 @@ SearchResult StanceSearch::run() {
     while (advanced && t + 1 < guide.size()) {
       advanced = false;
       for (const SearchNode& n : tree)
-        if (guide.distance(n.q, guide.milestone(t)) <= options_.milestone_tolerance) {
+        if (guide.distance_to(n.q, t) <= milestone_tolerance(t)) {
           ++t;
           advanced = true;
           SearchEvent e;
@@ -259,7 +267,9 @@ SearchResult StanceSearch::run() {
   if (is_goal(tree[0])) return found(0);
 
   std::vector<int> open = {0};
-  std::deque<Attempt> retries;
+  // Backtracking queues: failed candidates that would add a goal contact are retried at once from
+  // other initial guesses; the others when the open queue is empty.
+  std::deque<Attempt> urgent, retries;
   while (true) {
     result.closest_node = closest();
     result.milestone = t;
@@ -269,7 +279,10 @@ SearchResult StanceSearch::run() {
     if (result.nodes_expanded >= options_.max_nodes)
       return finish(PlanStatus::NodeBudget, "no plan within " + std::to_string(options_.max_nodes) + " expanded nodes");
     std::vector<Attempt> batch;
-    if (!open.empty()) {
+    if (!urgent.empty()) {
+      batch.assign(urgent.begin(), urgent.end());
+      urgent.clear();
+    } else if (!open.empty()) {
       // Pop the best open node (ties: the older node, for determinism).
       auto best = std::min_element(open.begin(), open.end(), [&](int a, int b) {
         const double ca = cost(tree[a]), cb = cost(tree[b]);
@@ -328,7 +341,9 @@ SearchResult StanceSearch::run() {
         for (ContactTask& task : r.contacts)
           if (task.contact.same_surfaces(a.candidate.contact)) task.loaded = false;
       }
-      r.q_init = a.attempt == 0 ? node.q : perturbed(system, node.q, a.node, a.attempt, i);
+      // Initial guesses: the node's configuration; on the first retry the targeted milestone (often
+      // in a better basin, e.g. sitting down); then perturbations of the node's configuration.
+      r.q_init = a.attempt == 0 ? node.q : a.attempt == 1 ? q_ref : perturbed(system, node.q, a.node, a.attempt, i);
       r.q_ref = q_ref;
     }
     parallel_for(int(batch.size()), threads, [&](int i) {
@@ -372,7 +387,8 @@ SearchResult StanceSearch::run() {
           open.push_back(e.node);
         }
       } else if (a.attempt < options_.max_retries) {
-        retries.push_back({a.node, a.candidate, a.attempt + 1});
+        const bool towards_goal = a.candidate.add && goal.find(a.candidate.contact) >= 0;
+        (towards_goal ? urgent : retries).push_back({a.node, a.candidate, a.attempt + 1});
       }
       e.milestone = t;
       e.nodes = int(tree.size());
