@@ -8,7 +8,8 @@
 namespace stanceplan {
 
 PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
-                       const SolverOptions& options, std::vector<int> active_pairs)
+                       const SolverOptions& options, std::vector<int> active_pairs,
+                       std::vector<double> pair_bounds)
     : layout_(scene, request, options), state_(scene, request, options, layout_), objective_(state_) {
   const System& system = scene.system;
   auto add = [&](std::unique_ptr<ConstraintBlock> block) {
@@ -26,8 +27,9 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
     if (options.enforce_torque_limits && entity.kind != EntityKind::Object && entity.model->num_dofs() > 0)
       add(std::make_unique<TorqueLimitBlock>(state_, e));
   }
+  if (pair_bounds.size() != active_pairs.size()) pair_bounds.assign(active_pairs.size(), options.collision_margin);
   if (scene.collision && options.enforce_collisions && !active_pairs.empty())
-    add(std::make_unique<CollisionBlock>(state_, std::move(active_pairs), options.collision_margin));
+    add(std::make_unique<CollisionBlock>(state_, std::move(active_pairs), std::move(pair_bounds)));
   std::vector<int> columns;
   for (const auto& block : blocks_) {
     first_row_.push_back(m_);

@@ -12,9 +12,10 @@ namespace stanceplan {
 
 class PostureNlp {
  public:
-  // active_pairs: indices into scene.collision->pairs() that enter the program (E20).
+  // active_pairs: indices into scene.collision->pairs() that enter the program (E20), with the
+  // least distance each must keep (default: options.collision_margin).
   PostureNlp(const Scene& scene, const PostureRequest& request, const SolverOptions& options,
-             std::vector<int> active_pairs);
+             std::vector<int> active_pairs, std::vector<double> pair_bounds = {});
 
   int n() const { return layout_.n; }
   int m() const { return m_; }

@@ -180,15 +180,29 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
   PostureResult result;
   const auto start = std::chrono::steady_clock::now();
   std::vector<int> active;
+  std::vector<double> initial_distance;  // per candidate pair, at the initial guess
   std::vector<bool> excluded = excluded_pairs(request);
   const bool collisions = scene_.collision && options.enforce_collisions;
   if (collisions) {
-    const auto d = pair_distances(scene_, request.q_init, excluded, options.collision_active_distance);
-    for (size_t p = 0; p < d.size(); ++p)
-      if (d[p] < options.collision_active_distance) active.push_back(int(p));
+    initial_distance = pair_distances(scene_, request.q_init, excluded, options.collision_active_distance);
+    for (size_t p = 0; p < initial_distance.size(); ++p)
+      if (initial_distance[p] < options.collision_active_distance) active.push_back(int(p));
   }
+  // E20 with the margin, except that a pair touching or nearly so at the initial guess need not
+  // move apart further than it is: a foot just lifted off the floor may stay touching it (d >= 0),
+  // which keeps the guess feasible where the distance between parallel faces is least smooth. A
+  // pair penetrating at the guess (a bad guess) must reach the full margin.
+  auto bound_of = [&](int p) {
+    const double d = initial_distance[p];
+    return d >= -1e-6 ? std::min(options.collision_margin, std::max(0.0, d)) : options.collision_margin;
+  };
+  auto bounds_of = [&](const std::vector<int>& pairs) {
+    std::vector<double> bounds;
+    for (int p : pairs) bounds.push_back(bound_of(p));
+    return bounds;
+  };
   for (int round = 0;; ++round) {
-    PostureNlp nlp(scene_, request, options, active);
+    PostureNlp nlp(scene_, request, options, active, bounds_of(active));
     const IpoptRun run = run_ipopt(nlp, options);
     result.iterations += run.iterations;
     result.status = run.status;
@@ -209,7 +223,7 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
     double worst = 0.0;
     size_t before = active.size();
     for (size_t p = 0; p < d.size(); ++p) {
-      if (d[p] < options.collision_margin - 1e-4 &&
+      if (d[p] < bound_of(int(p)) - 1e-4 &&
           std::find(active.begin(), active.end(), int(p)) == active.end())
         active.push_back(int(p));
       if (d[p] < 0) worst = std::max(worst, -d[p]);

@@ -106,7 +106,8 @@ class TorqueLimitBlock : public ConstraintBlock {
 // E20: signed distance >= margin for every active pair of links (E48 for the gradient).
 class CollisionBlock : public ConstraintBlock {
  public:
-  CollisionBlock(const NlpState& state, std::vector<int> pairs, double margin);
+  // lower_bounds[i]: the least signed distance pair i must keep.
+  CollisionBlock(const NlpState& state, std::vector<int> pairs, std::vector<double> lower_bounds);
   int rows() const override { return static_cast<int>(pairs_.size()); }
   void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
   void row_columns(int r, std::vector<int>* columns) const override;
@@ -119,7 +120,7 @@ class CollisionBlock : public ConstraintBlock {
   const System& system_;
   const CollisionModel& model_;
   std::vector<int> pairs_;
-  double margin_;
+  std::vector<double> lower_bounds_;
   mutable CollisionData work_;
   mutable std::vector<DistanceResult> results_;
   mutable Eigen::VectorXd x_of_results_;

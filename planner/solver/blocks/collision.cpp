@@ -4,19 +4,19 @@
 
 namespace stanceplan {
 
-CollisionBlock::CollisionBlock(const NlpState& state, std::vector<int> pairs, double margin)
+CollisionBlock::CollisionBlock(const NlpState& state, std::vector<int> pairs, std::vector<double> lower_bounds)
     : ConstraintBlock("collision"),
       system_(state.scene.system),
       model_(*state.scene.collision),
       pairs_(std::move(pairs)),
-      margin_(margin),
+      lower_bounds_(std::move(lower_bounds)),
       work_(state.scene.system, *state.scene.collision),
       results_(pairs_.size()),
       gradient_(state.scene.system.nq()) {}
 
 void CollisionBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,
                             Eigen::Ref<Eigen::VectorXd> upper) const {
-  lower.setConstant(margin_);  // E20
+  for (int r = 0; r < rows(); ++r) lower[r] = lower_bounds_[r];  // E20
   upper.setConstant(1e19);
 }
 
