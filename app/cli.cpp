@@ -8,6 +8,7 @@
 #include "app/inspect_command.h"
 #include "app/plan_command.h"
 #include "app/posture_command.h"
+#include "app/render_command.h"
 #include "planner/util/input_error.h"
 
 namespace stanceplan::app {
@@ -64,6 +65,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_posture(cli, posture);
   PlanOptions plan;
   add_plan(cli, plan);
+  RenderOptions render_options;
+  add_render_subcommand(cli, render_options);
   std::string certify_plan;
   cli.add_subcommand("certify", "Re-check a plan from the plan file and the models alone (never the solver). "
                                 "Exit 2 when a check fails")
@@ -83,6 +86,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("posture")) return run_posture(posture, out, err);
     if (cli.got_subcommand("plan")) return run_plan(plan, out, err);
     if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
+    if (cli.got_subcommand("render")) return run_render(render_options, out, err);
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;

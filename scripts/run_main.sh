@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# README command 1: installs what is missing, builds, and runs the main job on the default
-# scenario. The search does not exist yet (issue 4): for now the main job describes the default
-# scenario's models (the humanoid and the desk room) with `stanceplan inspect`.
+# README command 1: installs what is missing, builds, and runs the main job: plan the scenario
+# (default scenarios/humanoid_walk.yaml; the paper's desk scenario becomes the default once it
+# plans), certify the plan, and render its steps, a figure strip and an animated GIF into
+# ./stanceplan-out/. No display is needed (off-screen OSMesa rendering).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+scenario=${1:-$root/scenarios/humanoid_walk.yaml}
+out=${STANCEPLAN_OUT:-$PWD/stanceplan-out}
 "$root/scripts/bootstrap.sh"
 "$root/scripts/build.sh"
 bin="${BUILD_DIR:-$root/build}/app/stanceplan"
-"$bin" inspect "$root/assets/robots/humanoid/humanoid.urdf" --kind floating \
-  --surfaces "$root/assets/robots/humanoid/humanoid.surfaces.yaml"
-"$bin" inspect "$root/assets/environments/desk_room/desk_room.urdf" --kind environment \
-  --surfaces "$root/assets/environments/desk_room/desk_room.surfaces.yaml"
+mkdir -p "$out"
+"$bin" plan "$scenario" --out "$out/plan.json"
+"$bin" certify "$out/plan.json"
+"$bin" render "$out/plan.json" --out "$out/steps" --strip "$out/strip.png" --gif "$out/sequence.gif"
+echo "main job done: plan $out/plan.json, step images $out/steps/, strip $out/strip.png, animation $out/sequence.gif"

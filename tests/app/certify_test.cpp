@@ -33,7 +33,7 @@ CliResult run(std::vector<std::string> args) {
 class Certify : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    path_ = new std::string(::testing::TempDir() + "certify_walk.json");
+    path_ = new std::string((test::temp_dir("certify") / "certify_walk.json").string());
     const CliResult r = run({"plan", test::source_path("scenarios/humanoid_walk.yaml"), "--out", *path_, "--threads", "1"});
     ASSERT_EQ(r.code, 0) << r.err;
     std::ifstream in(*path_);
@@ -47,7 +47,7 @@ class Certify : public ::testing::Test {
   static CliResult certify_modified(const std::function<void(json&)>& change, const std::string& name) {
     json copy = *plan_;
     change(copy);
-    const std::string path = ::testing::TempDir() + "tampered_" + name + ".json";
+    const std::string path = (test::temp_dir("certify") / ("tampered_" + name + ".json")).string();
     std::ofstream(path) << copy.dump();
     return run({"certify", path});
   }
@@ -113,7 +113,7 @@ TEST_F(Certify, AnUnreadablePlanIsBadInput) {
 
 TEST(PlanCommand, AnUnreachableGoalExitsTwoWithAReason) {
   const CliResult r = run({"plan", test::source_path("tests/data/high_platform/unreachable.yaml"), "--out",
-                           ::testing::TempDir() + "unreachable.json", "--max-nodes", "4"});
+                           (test::temp_dir("certify") / "unreachable.json").string(), "--max-nodes", "4"});
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("stanceplan: no plan found ("));
   EXPECT_THAT(r.err, HasSubstr("closest stance to the goal: {"));

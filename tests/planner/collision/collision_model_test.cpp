@@ -27,7 +27,7 @@ namespace {
 using test::Scene;
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "stanceplan_collision";
+  const std::filesystem::path dir = test::temp_dir("collision");
   std::filesystem::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path) << text;

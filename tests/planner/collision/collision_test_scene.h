@@ -15,6 +15,7 @@
 #include "planner/collision/collision_model.h"
 #include "planner/collision/signed_distance.h"
 #include "planner/model/kinematics.h"
+#include "tests/support/paths.h"
 #include "planner/model/urdf_loader.h"
 
 namespace stanceplan::test {
@@ -22,7 +23,7 @@ namespace stanceplan::test {
 // Irregular octahedron (half-axes 0.05, 0.04, 0.07, slightly skewed), faces counter-clockwise seen
 // from outside.
 inline std::string write_octahedron_obj() {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "stanceplan_collision";
+  const std::filesystem::path dir = test::temp_dir("collision");
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "octahedron.obj").string();
   std::ofstream out(path);

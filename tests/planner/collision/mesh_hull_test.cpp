@@ -172,7 +172,7 @@ TEST(MeshLoader, MissingFileIsAnInputErrorNamingThePath) {
 
 TEST(MeshLoader, UnreadableFileIsAnInputErrorNamingThePath) {
   const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / "stanceplan_collision" / "garbage.stl";
+      test::temp_dir("collision") / "garbage.stl";
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path) << "this is not a mesh\n";
   try {

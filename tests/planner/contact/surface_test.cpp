@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "tests/support/paths.h"
+
 #include <filesystem>
 #include <fstream>
 
@@ -82,7 +84,7 @@ class SurfaceFile : public ::testing::Test {
  protected:
   void SetUp() override {
     model_ = load_urdf_string(test::kBranchingUrdf, ".");
-    const auto dir = std::filesystem::temp_directory_path() / "stanceplan_surfaces";
+    const auto dir = test::temp_dir("surfaces");
     std::filesystem::create_directories(dir);
     path_ = (dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
                     ".yaml")).string();

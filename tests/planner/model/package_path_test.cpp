@@ -1,6 +1,8 @@
 // package:// resolution as ../shared/robots/README.md specifies it.
 #include <gtest/gtest.h>
 
+#include "tests/support/paths.h"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +16,7 @@ namespace fs = std::filesystem;
 class PackagePathTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() / "stanceplan_pkg";
+    root_ = test::temp_dir("pkg");
     fs::remove_all(root_);
     touch(root_ / "one/robotpkg/meshes/a.stl");  // DIR/NAME/REST
     touch(root_ / "two/meshes/a.stl");           // DIR/REST

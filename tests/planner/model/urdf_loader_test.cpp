@@ -86,7 +86,7 @@ TEST(UrdfLoader, LinksAreInTopologicalOrder) {
 class BadUrdf : public ::testing::Test {
  protected:
   std::string write(const std::string& name, const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() / "stanceplan_bad_urdf";
+    const auto dir = test::temp_dir("stanceplan_bad_urdf");
     std::filesystem::create_directories(dir);
     const std::string path = (dir / name).string();
     std::ofstream(path) << text;

@@ -46,7 +46,7 @@ std::string timeless(const Plan& plan, const Scenario& scenario) {
 
 TEST_F(Walk, PlansAndTheCheckerCertifiesThePlan) {
   ASSERT_EQ(result_->status, PlanStatus::Found) << result_->message;
-  const std::string path = ::testing::TempDir() + "walk_plan.json";
+  const std::string path = (test::temp_dir("search") / "walk_plan.json").string();
   write_plan(result_->plan, *scenario_, path);
   const CertifyReport report = certify(read_plan(path));
   for (const CheckResult& c : report.checks) EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": " << c.detail;

@@ -1,0 +1,157 @@
+#include "app/render_command.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <ostream>
+
+#include "planner/io/plan_reader.h"
+#include "planner/util/input_error.h"
+#include "render/gif_writer.h"
+#include "render/png_io.h"
+#include "render/sequence.h"
+
+namespace stanceplan::app {
+namespace {
+
+constexpr int kMaxImageSide = 8192;
+constexpr int kGifMaxWidth = 640;  // GIFs are for slides and READMEs: small files
+
+// "1280x720" -> (1280, 720); false on anything else.
+bool parse_size(const std::string& text, int* width, int* height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+    return false;
+  if (w < 16 || h < 16 || w > kMaxImageSide || h > kMaxImageSide) return false;
+  *width = w;
+  *height = h;
+  return true;
+}
+
+render::SequenceOptions sequence_options(const RenderOptions& options, const LoadedPlan& plan) {
+  render::SequenceOptions out;
+  out.width = options.width;
+  out.height = options.height;
+  const auto view = render::parse_view(options.view);
+  if (!view)
+    throw InputError("--view: unknown view \"" + options.view +
+                     "\" (expected front, side, top or three-quarter)");
+  out.view = *view;
+  out.style.collision_geometry = options.collision_geometry;
+  out.style.friction_cones = options.friction_cones;
+  out.style.friction = plan.friction;
+  if (!options.eye.empty() || !options.target.empty()) {
+    if (options.eye.size() != 3 || options.target.size() != 3)
+      throw InputError("--eye and --target: both are needed, with 3 coordinates each");
+    render::Camera camera;
+    camera.eye = Eigen::Vector3d(options.eye[0], options.eye[1], options.eye[2]);
+    camera.target = Eigen::Vector3d(options.target[0], options.target[1], options.target[2]);
+    if ((camera.eye - camera.target).norm() < 1e-6)
+      throw InputError("--eye and --target: must differ");
+    if ((camera.target - camera.eye).normalized().cross(camera.up).norm() < 1e-3)
+      camera.up = Eigen::Vector3d::UnitY();
+    out.camera = camera;
+  }
+  return out;
+}
+
+void print_warnings(const std::vector<std::string>& warnings, std::ostream& err) {
+  for (const std::string& w : warnings) err << "stanceplan: warning: " << w << "\n";
+}
+
+void write_steps(const LoadedPlan& plan, const render::SequenceOptions& options,
+                 const std::string& dir, const std::shared_ptr<render::MeshLibrary>& meshes,
+                 std::ostream& out, std::ostream& err) {
+  std::filesystem::create_directories(dir);
+  render::SequenceRenderer sequence(plan, options, meshes);
+  for (int i = 0; i < sequence.num_steps(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "step_%03d.png", i);
+    render::write_png((std::filesystem::path(dir) / name).string(), sequence.render_step(i));
+    print_warnings(sequence.take_warnings(), err);
+  }
+  out << "render: " << sequence.num_steps() << (sequence.num_steps() == 1 ? " image" : " images")
+      << " in " << dir << "\n";
+}
+
+void write_gif(const LoadedPlan& plan, render::SequenceOptions options, const std::string& path,
+               const std::shared_ptr<render::MeshLibrary>& meshes, std::ostream& out,
+               std::ostream& err) {
+  if (options.width > kGifMaxWidth) {
+    options.height = std::max(16, options.height * kGifMaxWidth / options.width);
+    options.width = kGifMaxWidth;
+  }
+  options.style.legend = false;  // too small to read in a GIF; the colours speak for themselves
+  render::SequenceRenderer sequence(plan, options, meshes);
+  std::vector<render::Image> frames;
+  for (int i = 0; i < sequence.num_steps(); ++i) frames.push_back(sequence.render_step(i));
+  print_warnings(sequence.take_warnings(), err);
+  render::write_gif(path, frames);
+  out << "render: animated GIF of " << frames.size() << " frames in " << path << "\n";
+}
+
+}  // namespace
+
+void add_render_subcommand(CLI::App& cli, RenderOptions& options) {
+  CLI::App* cmd = cli.add_subcommand("render",
+                                     "Render a plan's steps off-screen (no display needed): "
+                                     "DIR/step_000.png, ..., a figure strip and an animated GIF");
+  cmd->add_option("plan", options.plan, "plan file (stanceplan/plan@1 JSON)")->required();
+  cmd->add_option("--out", options.out_dir, "folder for the step images (created if missing)");
+  cmd->add_option_function<std::string>(
+         "--size",
+         [&options](const std::string& text) {
+           if (!parse_size(text, &options.width, &options.height))
+             throw CLI::ValidationError(
+                 "--size", "expected WIDTHxHEIGHT between 16 and 8192, found \"" + text + "\"");
+         },
+         "image size in pixels (default: 1280x720)")
+      ->type_name("WxH");
+  cmd->add_option("--view", options.view,
+                  "camera direction: front | side | top | three-quarter (default)")
+      ->check(CLI::IsMember({"front", "side", "top", "three-quarter"}));
+  cmd->add_option("--strip", options.strip, "also write the figure strip of the sequence (PNG)");
+  cmd->add_option("--gif", options.gif, "also write an animated GIF of the steps");
+  cmd->add_flag("--collision-geometry", options.collision_geometry,
+                "draw collision instead of visual geometry");
+  cmd->add_flag("--friction-cones", options.friction_cones,
+                "draw the friction cone at every loaded contact vertex");
+  cmd->add_option("--eye", options.eye, "explicit camera position X Y Z (with --target)")
+      ->expected(3);
+  cmd->add_option("--target", options.target, "explicit camera target X Y Z (with --eye)")
+      ->expected(3);
+}
+
+int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.out_dir.empty() && options.strip.empty() && options.gif.empty())
+    throw InputError(
+        "render: nothing to write: give --out DIR, --strip FILE.png or --gif FILE.gif");
+  if (options.width < 16 || options.height < 16 || options.width > kMaxImageSide ||
+      options.height > kMaxImageSide)
+    throw InputError("--size: expected between 16 and 8192 pixels per side");
+  PlanReadOptions read_options;
+  read_options.build_collision = false;
+  const LoadedPlan plan = read_plan(options.plan, read_options);
+  if (plan.plan.steps.empty())
+    throw InputError(options.plan + ": steps: the plan has no step to render");
+  const render::SequenceOptions sequence = sequence_options(options, plan);
+  // One library for every image set: each mesh file is read once, and each warning printed once.
+  const auto meshes = std::make_shared<render::MeshLibrary>();
+  if (!options.out_dir.empty()) write_steps(plan, sequence, options.out_dir, meshes, out, err);
+  if (!options.strip.empty()) {
+    std::vector<std::string> warnings;
+    const render::Image strip =
+        render::render_strip(plan, render::StripOptions{}, sequence, meshes, &warnings);
+    print_warnings(warnings, err);
+    render::write_png(options.strip, strip);
+    out << "render: strip of " << plan.plan.steps.size()
+        << (plan.plan.steps.size() == 1 ? " step" : " steps") << " in " << options.strip << "\n";
+  }
+  if (!options.gif.empty()) write_gif(plan, sequence, options.gif, meshes, out, err);
+  return 0;
+}
+
+}  // namespace stanceplan::app

@@ -1,0 +1,136 @@
+#pragma once
+// Scenes and plans for the renderer's tests: boxes built in code (exact pixel facts), the project's
+// humanoid as a multi-step plan file, and TALOS from ../shared/robots.
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "planner/io/plan_writer.h"
+#include "planner/io/scenario.h"
+#include "planner/model/kinematics.h"
+#include "planner/model/urdf_loader.h"
+#include "render/render_style.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan::test {
+
+struct TestBox {
+  Eigen::Vector3d centre;
+  Eigen::Vector3d size;
+  Eigen::Vector4d rgba;
+};
+
+// One fixed, joint-less entity whose only link carries the boxes (so no configuration is needed).
+inline Scene boxes_scene(const std::vector<TestBox>& boxes) {
+  Model model;
+  model.name = "boxes";
+  Link link;
+  link.name = "base";
+  for (const TestBox& b : boxes) {
+    LinkGeometry g;
+    g.shape.type = ShapeType::Box;
+    g.shape.size = b.size;
+    g.T_LG.translation() = b.centre;
+    g.has_color = true;
+    g.rgba = b.rgba;
+    link.visuals.push_back(g);
+  }
+  model.links.push_back(link);
+  model.finalize();
+  Entity entity;
+  entity.name = "boxes";
+  entity.kind = EntityKind::FixedRobot;
+  entity.model = std::make_shared<const Model>(std::move(model));
+  Scene scene;
+  scene.system.add(entity);
+  scene.surfaces = SurfaceSet(1);
+  return scene;
+}
+
+// Flat colours on a flat background, nothing else: every pixel is either a box colour or the
+// background, exactly.
+inline render::RenderStyle plain_style() {
+  render::RenderStyle style;
+  style.lighting = false;
+  style.shadows = false;
+  style.background_gradient = false;
+  style.background_bottom = render::Color{1.0f, 1.0f, 1.0f, 1.0f};
+  style.grid = false;
+  style.floor = false;
+  style.caption = false;
+  style.legend = false;
+  return style;
+}
+
+// A fresh, empty folder of this test process's own (test::temp_dir).
+inline std::string fresh_dir(const std::string& name) {
+  const std::filesystem::path dir = test::temp_dir("render_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+// The humanoid of scenarios/humanoid_stand.yaml in `num_steps` postures (arms moving), both soles
+// on the floor and loaded, each sole vertex carrying an eighth of the weight. Not a solved plan:
+// a picture fixture written through the plan writer, read back by the plan reader.
+inline std::string write_humanoid_plan(const std::string& dir, int num_steps) {
+  const Scenario scenario = load_scenario(source_path("scenarios/humanoid_stand.yaml"));
+  const Scene& scene = scenario.scene;
+  const int robot = scene.system.find_entity("robot");
+  const Entity& entity = scene.system.entity(robot);
+  Plan plan;
+  for (int i = 0; i < num_steps; ++i) {
+    PlanStep step;
+    step.action = i == 0 ? "initial" : "add";
+    step.q = scenario.initial_configuration;
+    const int offset = scene.system.offset(robot) + entity.first_dof();
+    for (const char* joint : {"l_shoulder_p", "r_shoulder_p"}) {
+      const int dof = entity.model->find_dof(joint);
+      if (dof >= 0) step.q[offset + dof] = -0.5 * i;
+    }
+    for (const StanceContact& c : scenario.initial_stance)
+      step.contacts.push_back({c.contact, true});
+    if (i > 0) step.changed = step.contacts.back().contact;
+    step.stance = scenario.stance(scenario.initial_stance);
+    ModelData data(entity);
+    forward_kinematics(entity, step.q.segment(scene.system.offset(robot), entity.nq()), data);
+    const double weight = entity.model->total_mass * 9.81;
+    for (int c = 0; c < static_cast<int>(step.contacts.size()); ++c) {
+      const Surface& s1 = scene.surfaces.get(step.contacts[c].contact.s1);
+      const std::vector<Eigen::Vector3d> vertices = s1.vertices_L();
+      for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
+        VertexForce f;
+        f.contact = c;
+        f.vertex = v;
+        f.point_W = data.T_WL[s1.link] * vertices[v];
+        f.force_W = Eigen::Vector3d(0.0, 0.0, weight / 8.0);
+        step.forces.push_back(f);
+      }
+    }
+    plan.steps.push_back(step);
+  }
+  const std::string path = dir + "/humanoid_plan.json";
+  write_plan(plan, scenario, path);
+  return path;
+}
+
+// TALOS (STL meshes, several mirrored) as a floating robot, standing at the origin.
+inline Scene talos_scene(Eigen::VectorXd* q) {
+  UrdfOptions options;
+  options.packages.directories = {talos_package_dir()};
+  options.packages.use_ros_package_path = false;
+  Entity entity;
+  entity.name = "talos";
+  entity.kind = EntityKind::FloatingRobot;
+  entity.model = std::make_shared<const Model>(load_urdf(talos_urdf(), options));
+  Scene scene;
+  scene.system.add(entity);
+  scene.surfaces = SurfaceSet(1);
+  *q = scene.system.neutral_configuration();
+  (*q)[2] = 1.08;
+  return scene;
+}
+
+}  // namespace stanceplan::test
