@@ -54,7 +54,7 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
   if (result.status != PlanStatus::Found) {
     err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message << "\n";
     if (result.closest_node >= 0)
-      err << "  closest stance to the goal: " << describe(scenario.scene, result.tree[result.closest_node].stance) << "\n";
+      err << "  closest stance to the goal: " << describe(scenario.scene, result.tree[result.closest_node].stance()) << "\n";
     err << "  goal stance: " << describe(scenario.scene, scenario.stance(scenario.goal_stance)) << "\n";
     err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls << " solver calls, "
         << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";

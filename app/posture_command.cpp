@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "app/cli.h"
+#include "planner/io/plan_step.h"
 #include "planner/io/plan_writer.h"
 #include "planner/solver/posture_solver.h"
 
@@ -34,17 +35,8 @@ int run_posture(const PostureOptions& options, std::ostream& out, std::ostream& 
       err << "  " << std::left << std::setw(18) << family << " worst violation " << residual << "\n";
     return kExitFailed;
   }
-  PlanStep step;
-  for (const ContactTask& t : request.contacts) step.contacts.push_back({t.contact, true});
-  step.stance = scenario.stance(contacts);
-  step.q = result.q;
-  step.forces = result.forces;
-  step.torques = result.torques;
-  step.iterations = result.iterations;
-  step.time_ms = result.time_ms;
-  step.objective = result.objective;
   Plan plan;
-  plan.steps.push_back(step);
+  plan.steps.push_back(make_plan_step(request, result, scenario.stance(contacts), "initial", std::nullopt));
   plan.stats.solver_calls = 1;
   plan.stats.wall_time_s = result.time_ms / 1000.0;
   if (options.out.empty()) {

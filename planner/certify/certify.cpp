@@ -233,11 +233,7 @@ class Checker {
   }
 
   void check_step(int i, const PlanStep& step, const PlanStep* previous) {
-    data_.clear();
-    for (int e = 0; e < system_.num_entities(); ++e) {
-      data_.emplace_back(system_.entity(e));
-      forward_kinematics(system_.entity(e), step.q.segment(system_.offset(e), system_.entity(e).nq()), data_.back());
-    }
+    data_ = system_kinematics(system_, step.q);
     check_sequence(i, step, previous);
     check_contacts(i, step);
     check_forces(i, step);

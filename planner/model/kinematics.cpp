@@ -63,6 +63,16 @@ void forward_kinematics(const Entity& entity, const Eigen::Ref<const Eigen::Vect
     data.subtree_moment_W[model.links[i].parent_link] += data.subtree_moment_W[i];
 }
 
+std::vector<ModelData> system_kinematics(const System& system, const Eigen::VectorXd& q) {
+  std::vector<ModelData> data;
+  data.reserve(system.num_entities());
+  for (int e = 0; e < system.num_entities(); ++e) {
+    data.emplace_back(system.entity(e));
+    forward_kinematics(system.entity(e), q.segment(system.offset(e), system.entity(e).nq()), data.back());
+  }
+  return data;
+}
+
 void point_jacobian_world(const Entity& entity, const ModelData& data, int link,
                           const Eigen::Vector3d& p_W, Eigen::Ref<Eigen::MatrixXd> J) {
   const Model& model = *entity.model;

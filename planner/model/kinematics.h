@@ -6,11 +6,18 @@
 
 #include "planner/model/entity.h"
 #include "planner/model/model_data.h"
+#include "planner/model/system.h"
+
+#include <vector>
 
 namespace stanceplan {
 
 void forward_kinematics(const Entity& entity, const Eigen::Ref<const Eigen::VectorXd>& q,
                         ModelData& data);
+
+// Forward kinematics of every entity of a system at the full configuration q (allocates: for
+// checks and set-up, not for solver callbacks).
+std::vector<ModelData> system_kinematics(const System& system, const Eigen::VectorXd& q);
 
 // d p_W / dq for the point rigidly attached to `link` that is at p_W (world) now.
 void point_jacobian_world(const Entity& entity, const ModelData& data, int link,

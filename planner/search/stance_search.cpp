@@ -7,6 +7,7 @@
 #include <random>
 #include <thread>
 
+#include "planner/io/plan_step.h"
 #include "planner/model/kinematics.h"
 #include "planner/search/candidates.h"
 #include "planner/search/parallel_for.h"
@@ -37,14 +38,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::vector<ModelData> kinematics_at(const System& system, const Eigen::VectorXd& q) {
-  std::vector<ModelData> data;
-  for (int e = 0; e < system.num_entities(); ++e) {
-    data.emplace_back(system.entity(e));
-    forward_kinematics(system.entity(e), q.segment(system.offset(e), system.entity(e).nq()), data.back());
-  }
-  return data;
-}
 
 int stance_difference(const Stance& a, const Stance& b) {
   int d = 0;
@@ -109,7 +102,7 @@ SearchResult StanceSearch::run() {
       failure.message = std::string(to_string(status)) + ": " + result.message;
       failure.node = result.closest_node;
       failure.nodes = int(tree.size());
-      if (result.closest_node >= 0) failure.stance = tree[result.closest_node].stance;
+      if (result.closest_node >= 0) failure.stance = tree[result.closest_node].stance();
       if (observer_) {
         failure.number = next_event_++;
         observer_(failure);  // always delivered, even when cancelled
@@ -129,27 +122,18 @@ SearchResult StanceSearch::run() {
   if (root_result.status != PostureStatus::Solved)
     return finish(PlanStatus::InitialInfeasible, "the initial stance has no posture: " + root_result.message);
   auto make_node = [&](int parent, const PostureRequest& request, const PostureResult& solved, const Stance& stance,
-                       const std::string& action, const Contact& changed) {
+                       const std::string& action, std::optional<Contact> changed) {
     SearchNode node;
     node.id = int(tree.size());
     node.parent = parent;
     node.depth = parent >= 0 ? tree[parent].depth + 1 : 0;
-    node.stance = stance;
     for (const Contact& c : stance.contacts())
       for (size_t i = 0; i < request.contacts.size(); ++i)
         if (request.contacts[i].contact.same_surfaces(c)) node.placements.push_back(solved.placements[i]);
-    node.q = solved.q;
-    node.action = action;
-    node.changed = changed;
-    for (const ContactTask& t : request.contacts) node.contacts.push_back({t.contact, t.loaded});
-    node.forces = solved.forces;
-    node.torques = solved.torques;
-    node.iterations = solved.iterations;
-    node.time_ms = solved.time_ms;
-    node.objective = solved.objective;
+    node.step = make_plan_step(request, solved, stance, action, changed);
     return node;
   };
-  tree.push_back(make_node(-1, root_request, root_result, scenario_.stance(scenario_.initial_stance), "initial", {}));
+  tree.push_back(make_node(-1, root_request, root_result, scenario_.stance(scenario_.initial_stance), "initial", std::nullopt));
 
   int t = 0;  // the targeted milestone
   auto milestone_tolerance = [&](int m) {
@@ -160,15 +144,15 @@ SearchResult StanceSearch::run() {
   // target (before that it would reward goal contacts made too early, e.g. hands on the desk while
   // still walking to it).
   auto cost = [&](const SearchNode& n) {
-    const double d = guide.size() > 0 ? guide.distance_to(n.q, t) : 0.0;
+    const double d = guide.size() > 0 ? guide.distance_to(n.q(), t) : 0.0;
     const bool final_approach = t + 1 >= guide.size();
-    return d + (final_approach ? options_.stance_weight * stance_difference(n.stance, goal) : 0.0);
+    return d + (final_approach ? options_.stance_weight * stance_difference(n.stance(), goal) : 0.0);
   };
   auto is_goal = [&](const SearchNode& n) {
-    if (stance_difference(n.stance, goal) != 0) return false;
+    if (stance_difference(n.stance(), goal) != 0) return false;
     for (const StanceContact& g : scenario_.goal_stance) {
       if (!g.placement) continue;
-      const int i = n.stance.find(g.contact);
+      const int i = n.stance().find(g.contact);
       const Placement& p = n.placements[i];
       if (std::abs(p.x - g.placement->x) > options_.placement_tolerance ||
           std::abs(p.y - g.placement->y) > options_.placement_tolerance ||
@@ -179,7 +163,7 @@ SearchResult StanceSearch::run() {
   };
   auto already_in_tree = [&](const Stance& stance, const std::vector<Placement>& placements) {
     for (const SearchNode& n : tree) {
-      if (!(n.stance == stance)) continue;
+      if (!(n.stance() == stance)) continue;
       bool same = true;
       for (size_t i = 0; i < placements.size() && same; ++i)
         same = std::abs(n.placements[i].x - placements[i].x) <= options_.placement_tolerance &&
@@ -192,7 +176,7 @@ SearchResult StanceSearch::run() {
   auto closest = [&] {
     int best = 0;
     for (const SearchNode& n : tree) {
-      const auto key = [&](const SearchNode& x) { return std::make_pair(stance_difference(x.stance, goal), cost(x)); };
+      const auto key = [&](const SearchNode& x) { return std::make_pair(stance_difference(x.stance(), goal), cost(x)); };
       if (key(n) < key(tree[best])) best = n.id;
     }
     return best;
@@ -203,14 +187,14 @@ SearchResult StanceSearch::run() {
     while (advanced && t + 1 < guide.size()) {
       advanced = false;
       for (const SearchNode& n : tree)
-        if (guide.distance_to(n.q, t) <= milestone_tolerance(t)) {
+        if (guide.distance_to(n.q(), t) <= milestone_tolerance(t)) {
           ++t;
           advanced = true;
           SearchEvent e;
           e.kind = SearchEventKind::Milestone;
           e.node = n.id;
-          e.stance = n.stance;
-          e.q = n.q;
+          e.stance = n.stance();
+          e.q = n.q();
           e.milestone = t;
           e.nodes = int(tree.size());
           if (!publish(e)) return;
@@ -222,28 +206,14 @@ SearchResult StanceSearch::run() {
     std::vector<int> path;
     for (int i = goal_node; i >= 0; i = tree[i].parent) path.push_back(i);
     std::reverse(path.begin(), path.end());
-    for (int i : path) {
-      const SearchNode& n = tree[i];
-      PlanStep step;
-      step.action = n.action;
-      if (n.action != "initial") step.changed = n.changed;
-      step.contacts = n.contacts;
-      step.stance = n.stance;
-      step.q = n.q;
-      step.forces = n.forces;
-      step.torques = n.torques;
-      step.iterations = n.iterations;
-      step.time_ms = n.time_ms;
-      step.objective = n.objective;
-      result.plan.steps.push_back(step);
-    }
+    for (int i : path) result.plan.steps.push_back(tree[i].step);
     result.closest_node = goal_node;
     result.milestone = t;
     SearchEvent e;
     e.kind = SearchEventKind::PlanFound;
     e.node = goal_node;
-    e.stance = tree[goal_node].stance;
-    e.q = tree[goal_node].q;
+    e.stance = tree[goal_node].stance();
+    e.q = tree[goal_node].q();
     e.milestone = t;
     e.nodes = int(tree.size());
     publish(e);
@@ -254,11 +224,11 @@ SearchResult StanceSearch::run() {
     SearchEvent e;
     e.kind = SearchEventKind::Candidate;
     e.node = 0;
-    e.stance = tree[0].stance;
+    e.stance = tree[0].stance();
     e.accepted = true;
-    e.q = tree[0].q;
-    e.contacts = tree[0].contacts;
-    e.forces = tree[0].forces;
+    e.q = tree[0].q();
+    e.contacts = tree[0].step.contacts;
+    e.forces = tree[0].step.forces;
     e.time_ms = root_result.time_ms;
     e.nodes = 1;
     if (!publish(e)) return finish(PlanStatus::Cancelled, "cancelled");
@@ -294,15 +264,15 @@ SearchResult StanceSearch::run() {
       SearchEvent e;
       e.kind = SearchEventKind::Expansion;
       e.node = n;
-      e.stance = tree[n].stance;
-      e.q = tree[n].q;
-      e.contacts = tree[n].contacts;
-      e.forces = tree[n].forces;
+      e.stance = tree[n].stance();
+      e.q = tree[n].q();
+      e.contacts = tree[n].step.contacts;
+      e.forces = tree[n].step.forces;
       e.milestone = t;
       e.nodes = int(tree.size());
       if (!publish(e)) return finish(PlanStatus::Cancelled, "cancelled");
-      const auto data = kinematics_at(system, tree[n].q);
-      for (const Candidate& c : enumerate_candidates(scene, data, tree[n].stance, goal, options_))
+      const auto data = system_kinematics(system, tree[n].q());
+      for (const Candidate& c : enumerate_candidates(scene, data, tree[n].stance(), goal, options_))
         batch.push_back({n, c, 0});
     } else if (!retries.empty()) {
       // Backtracking (METHOD.md section 3): the queue is empty, so retry earlier failures from
@@ -320,14 +290,14 @@ SearchResult StanceSearch::run() {
       const Attempt& a = batch[i];
       const SearchNode& node = tree[a.node];
       PostureRequest& r = requests[i];
-      for (size_t k = 0; k < node.stance.contacts().size(); ++k)
-        r.contacts.push_back({node.stance.contacts()[k], true, node.placements[k], std::nullopt});
-      const Eigen::VectorXd& q_ref = guide.size() > 0 ? guide.milestone(t) : node.q;
+      for (size_t k = 0; k < node.stance().contacts().size(); ++k)
+        r.contacts.push_back({node.stance().contacts()[k], true, node.placements[k], std::nullopt});
+      const Eigen::VectorXd& q_ref = guide.size() > 0 ? guide.milestone(t) : node.q();
       if (a.candidate.add) {
         ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt};
         // obj4 pulls the new contact towards its placement in the targeted milestone; a retry
         // aims at a point nearer the current one (a shorter step).
-        const Placement now = measure_placement(scene, a.candidate.contact, node.q);
+        const Placement now = measure_placement(scene, a.candidate.contact, node.q());
         const Placement aim = measure_placement(scene, a.candidate.contact, q_ref);
         const double share = std::pow(0.5, a.attempt);
         added.placement_target = Placement{now.x + share * (aim.x - now.x), now.y + share * (aim.y - now.y), aim.theta};
@@ -343,7 +313,7 @@ SearchResult StanceSearch::run() {
       }
       // Initial guesses: the node's configuration; on the first retry the targeted milestone (often
       // in a better basin, e.g. sitting down); then perturbations of the node's configuration.
-      r.q_init = a.attempt == 0 ? node.q : a.attempt == 1 ? q_ref : perturbed(system, node.q, a.node, a.attempt, i);
+      r.q_init = a.attempt == 0 ? node.q() : a.attempt == 1 ? q_ref : perturbed(system, node.q(), a.node, a.attempt, i);
       r.q_ref = q_ref;
     }
     parallel_for(int(batch.size()), threads, [&](int i) {
@@ -361,8 +331,8 @@ SearchResult StanceSearch::run() {
       ++result.solver_calls;
       result.solver_time_s += r.time_ms / 1000.0;
       const SearchNode& parent = tree[a.node];
-      const Stance next = a.candidate.add ? parent.stance.with(a.candidate.contact)
-                                          : parent.stance.without(parent.stance.find(a.candidate.contact));
+      const Stance next = a.candidate.add ? parent.stance().with(a.candidate.contact)
+                                          : parent.stance().without(parent.stance().find(a.candidate.contact));
       SearchEvent e;
       e.kind = SearchEventKind::Candidate;
       e.parent = a.node;
@@ -376,9 +346,10 @@ SearchResult StanceSearch::run() {
       e.forces = r.forces;
       e.time_ms = r.time_ms;
       if (r.status == PostureStatus::Solved) {
-        SearchNode child = make_node(a.node, requests[i], r, next, a.candidate.add ? "add" : "remove", a.candidate.contact);
+        SearchNode child = make_node(a.node, requests[i], r, next, a.candidate.add ? "add" : "remove",
+                                     a.candidate.contact);
         child.milestone = t;
-        if (already_in_tree(child.stance, child.placements)) {
+        if (already_in_tree(child.stance(), child.placements)) {
           e.message = "already in the tree";
         } else {
           e.accepted = true;

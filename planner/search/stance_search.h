@@ -23,19 +23,11 @@ struct SearchNode {
   int id = 0;
   int parent = -1;
   int depth = 0;
-  Stance stance;
-  std::vector<Placement> placements;  // per stance contact, realised at q
-  Eigen::VectorXd q;
   int milestone = 0;                  // the milestone targeted when the node was made
-  // The transition that made it (PLAN_FORMAT.md step semantics).
-  std::string action = "initial";
-  Contact changed;
-  std::vector<PlanContact> contacts;
-  std::vector<VertexForce> forces;
-  std::vector<Eigen::VectorXd> torques;
-  int iterations = 0;
-  double time_ms = 0.0;
-  double objective = 0.0;
+  std::vector<Placement> placements;  // per stance contact, realised at step.q
+  PlanStep step;                      // the transition that made it (its stance, q, forces, ...)
+  const Stance& stance() const { return step.stance; }
+  const Eigen::VectorXd& q() const { return step.q; }
 };
 
 struct SearchResult {

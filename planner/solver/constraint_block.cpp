@@ -1,5 +1,7 @@
 #include "planner/solver/constraint_block.h"
 
+#include <algorithm>
+
 namespace stanceplan {
 
 void append_link_columns(const System& system, int entity, int link, std::vector<int>* columns) {
@@ -24,6 +26,11 @@ void append_force_columns(const NlpLayout& layout, int task, std::vector<int>* c
   if (b < 0) return;
   const ForceBlock& block = layout.forces[b];
   for (int i = 0; i < block.size(); ++i) columns->push_back(block.first_column + i);
+}
+
+void sort_unique(std::vector<int>* columns) {
+  std::sort(columns->begin(), columns->end());
+  columns->erase(std::unique(columns->begin(), columns->end()), columns->end());
 }
 
 }  // namespace stanceplan

@@ -33,5 +33,6 @@ class ConstraintBlock {
 void append_link_columns(const System& system, int entity, int link, std::vector<int>* columns);
 void append_entity_columns(const System& system, int entity, std::vector<int>* columns);
 void append_force_columns(const NlpLayout& layout, int task, std::vector<int>* columns);
+void sort_unique(std::vector<int>* columns);
 
 }  // namespace stanceplan

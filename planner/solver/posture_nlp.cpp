@@ -36,8 +36,7 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
     for (int r = 0; r < block->rows(); ++r) {
       columns.clear();
       block->row_columns(r, &columns);
-      std::sort(columns.begin(), columns.end());
-      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+      sort_unique(&columns);
       for (int c : columns) {
         rows_.push_back(m_ + r);
         cols_.push_back(c);

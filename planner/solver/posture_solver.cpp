@@ -13,20 +13,12 @@
 namespace stanceplan {
 namespace {
 
-std::vector<ModelData> kinematics_at(const System& system, const Eigen::VectorXd& q) {
-  std::vector<ModelData> data;
-  for (int e = 0; e < system.num_entities(); ++e) {
-    data.emplace_back(system.entity(e));
-    forward_kinematics(system.entity(e), q.segment(system.offset(e), system.entity(e).nq()), data.back());
-  }
-  return data;
-}
 
 // Signed distance of every candidate pair that is not excluded (+inf for excluded ones).
 std::vector<double> pair_distances(const Scene& scene, const Eigen::VectorXd& q,
                                    const std::vector<bool>& excluded, double cutoff) {
   const CollisionModel& model = *scene.collision;
-  const std::vector<ModelData> data = kinematics_at(scene.system, q);
+  const std::vector<ModelData> data = system_kinematics(scene.system, q);
   CollisionData work(scene.system, model);
   work.update(model, data);
   std::vector<double> d(model.pairs().size(), INFINITY);

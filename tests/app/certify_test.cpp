@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/cli.h"
+#include "tests/support/cli.h"
 #include "tests/support/paths.h"
 
 namespace stanceplan {
@@ -16,19 +17,8 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-struct CliResult {
-  int code;
-  std::string out, err;
-};
-
-CliResult run(std::vector<std::string> args) {
-  args.insert(args.begin(), "stanceplan");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliResult;
+CliResult run(std::vector<std::string> args) { return test::run_cli(std::move(args)); }
 
 class Certify : public ::testing::Test {
  protected:

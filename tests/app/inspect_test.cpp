@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/cli.h"
+#include "tests/support/cli.h"
 #include "tests/support/paths.h"
 
 namespace stanceplan {
@@ -14,19 +15,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-struct CliResult {
-  int code;
-  std::string out, err;
-};
-
-CliResult run(std::vector<std::string> args) {
-  args.insert(args.begin(), "stanceplan");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliResult;
+CliResult run(std::vector<std::string> args) { return test::run_cli(std::move(args)); }
 
 TEST(Inspect, TalosJson) {
   const CliResult r = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),

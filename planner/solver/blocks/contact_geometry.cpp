@@ -16,8 +16,7 @@ ContactGeometryBlock::ContactGeometryBlock(const NlpState& state, int task)
   const ContactConstants& c = state.constants[task];
   append_link_columns(state.scene.system, c.e1, c.l1, &columns_);
   append_link_columns(state.scene.system, c.e2, c.l2, &columns_);
-  std::sort(columns_.begin(), columns_.end());
-  columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
+  sort_unique(&columns_);
 }
 
 void ContactGeometryBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,

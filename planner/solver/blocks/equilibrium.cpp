@@ -22,8 +22,7 @@ EquilibriumBlock::EquilibriumBlock(const NlpState& state, int entity)
     append_link_columns(system, c.e2, c.l2, &columns_);
     append_force_columns(state.layout, t, &columns_);
   }
-  std::sort(columns_.begin(), columns_.end());
-  columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
+  sort_unique(&columns_);
 }
 
 void EquilibriumBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,

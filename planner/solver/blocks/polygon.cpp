@@ -17,8 +17,7 @@ PolygonBlock::PolygonBlock(const NlpState& state, int task) : ConstraintBlock("p
   }
   append_link_columns(state.scene.system, c.e1, c.l1, &columns_);
   append_link_columns(state.scene.system, c.e2, c.l2, &columns_);
-  std::sort(columns_.begin(), columns_.end());
-  columns_.erase(std::unique(columns_.begin(), columns_.end()), columns_.end());
+  sort_unique(&columns_);
 }
 
 void PolygonBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const {
