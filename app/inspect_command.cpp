@@ -1,9 +1,11 @@
 #include "app/inspect_command.h"
 
 #include <iomanip>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "planner/collision/collision_model.h"
 #include "planner/contact/surface_file.h"
 #include "planner/model/entity.h"
 #include "planner/model/urdf_loader.h"
@@ -104,9 +106,10 @@ void print_text(const json& d, std::ostream& out) {
     if (j.contains("mimic")) out << "   mimics " << j["mimic"]["joint"].get<std::string>();
     out << "\n";
   }
-  size_t geometries = 0;
-  for (const json& l : d["links"]) geometries += l["collision"].size();
-  out << "collision geometries: " << geometries << "\n";
+  const json& c = d["collision"];
+  out << "collision: " << c["shapes"] << " shapes on " << c["links_with_geometry"] << " links (" << c["mesh_hulls"]
+      << " mesh convex hulls), " << c["candidate_pairs"] << " link pairs checked, " << c["srdf_disabled_pairs"]
+      << " disabled by the SRDF\n";
   out << "surfaces: " << d["surfaces"].size() << "\n";
   for (const json& s : d["surfaces"])
     out << "  " << std::left << std::setw(16) << s["name"].get<std::string>() << " on "
@@ -117,19 +120,40 @@ void print_text(const json& d, std::ostream& out) {
 
 }  // namespace
 
+// Builds the model's collision objects (convex hulls of meshes, primitives) and counts the pairs
+// the planner would check, with the SRDF's disabled pairs left out.
+json collision_summary(const std::shared_ptr<const Model>& model, EntityKind kind, const std::string& srdf) {
+  System system;
+  Entity entity;
+  entity.name = model->name;
+  entity.kind = kind;
+  entity.model = model;
+  system.add(entity);
+  CollisionOptions options;
+  if (!srdf.empty()) options.srdf_files.emplace_back(model->name, srdf);
+  const CollisionModel collision(system, options);
+  size_t hulls = 0;
+  for (const CollisionShape& shape : collision.shapes()) hulls += shape.hull != nullptr;
+  return {{"links_with_geometry", collision.links().size()}, {"shapes", collision.shapes().size()},
+          {"mesh_hulls", hulls}, {"candidate_pairs", collision.pairs().size()},
+          {"srdf_disabled_pairs", collision.num_srdf_disabled_pairs()}};
+}
+
 int run_inspect(const InspectOptions& options, std::ostream& out, std::ostream& err) {
   UrdfOptions urdf_options;
   urdf_options.packages.directories = options.package_paths;
-  const Model model = load_urdf(options.urdf, urdf_options);
+  const auto model = std::make_shared<const Model>(load_urdf(options.urdf, urdf_options));
   std::vector<Surface> surfaces;
-  if (!options.surfaces.empty()) surfaces = load_surface_file(options.surfaces, model);
-  const json description = describe(model, decide_kind(options, model), surfaces);
+  if (!options.surfaces.empty()) surfaces = load_surface_file(options.surfaces, *model);
+  const EntityKind kind = decide_kind(options, *model);
+  json description = describe(*model, kind, surfaces);
+  description["collision"] = collision_summary(model, kind, options.srdf);
   if (options.json)
     out << description.dump(2) << "\n";
   else
     print_text(description, out);
   if (options.json)
-    for (const std::string& w : model.load_warnings) err << "warning: " << w << "\n";
+    for (const std::string& w : model->load_warnings) err << "warning: " << w << "\n";
   return 0;
 }
 

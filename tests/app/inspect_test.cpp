@@ -36,6 +36,21 @@ TEST(Inspect, TalosJson) {
   EXPECT_TRUE(d["surfaces"].empty());
 }
 
+TEST(Inspect, TalosCollisionObjectsAreBuiltAndTheSrdfDisablesPairs) {
+  const std::string srdf = test::shared_path("robots/talos/robots/talos_data/srdf/talos.srdf");
+  const CliResult with = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
+                              "--kind", "floating", "--srdf", srdf, "--json"});
+  const CliResult without = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
+                                 "--kind", "floating", "--json"});
+  ASSERT_EQ(with.code, 0) << with.err;
+  ASSERT_EQ(without.code, 0) << without.err;
+  const auto a = nlohmann::json::parse(with.out)["collision"], b = nlohmann::json::parse(without.out)["collision"];
+  EXPECT_GT(a["mesh_hulls"].get<int>(), 30);
+  EXPECT_GT(a["srdf_disabled_pairs"].get<int>(), 0);
+  EXPECT_LT(a["candidate_pairs"].get<int>(), b["candidate_pairs"].get<int>());
+  EXPECT_EQ(b["srdf_disabled_pairs"], 0);
+}
+
 TEST(Inspect, PandaJsonListsPrismaticAndMimicJoints) {
   const CliResult r = run({"inspect", test::panda_urdf(), "--package-path", test::panda_package_dir(), "--json"});
   ASSERT_EQ(r.code, 0) << r.err;

@@ -1,0 +1,43 @@
+// The kinematics the solver calls in its callbacks allocate nothing once the workspace exists
+// (the model/data split): forward kinematics, point / vector / centre-of-mass Jacobians.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "planner/model/kinematics.h"
+#include "planner/model/urdf_loader.h"
+#include "tests/support/allocation_counter.h"
+#include "tests/support/test_models.h"
+
+namespace stanceplan {
+namespace {
+
+TEST(Kinematics, CallbacksDoNotAllocate) {
+  Entity e;
+  e.name = "e";
+  e.kind = EntityKind::FloatingRobot;
+  e.model = std::make_shared<Model>(load_urdf_string(test::kBranchingUrdf, "."));
+  ModelData data(e);
+  Eigen::VectorXd q = Eigen::VectorXd::Constant(e.nq(), 0.3);
+  Eigen::MatrixXd J(3, e.nq());
+  const Eigen::Vector3d p(0.1, 0.2, 0.3);
+  const long before = test::allocations();
+  for (int i = 0; i < 10; ++i) {
+    q[7] += 0.01;
+    forward_kinematics(e, q, data);
+    for (int link = 0; link < e.model->num_links(); ++link) {
+      point_jacobian(e, data, link, p, J);
+      vector_jacobian(e, data, link, p, J);
+    }
+    center_of_mass_jacobian(e, data, J);
+  }
+  EXPECT_EQ(test::allocations() - before, 0);
+  // The counter itself works: a vector allocates.
+  const long check = test::allocations();
+  auto* v = new std::vector<double>(100);
+  EXPECT_GT(test::allocations(), check);
+  delete v;
+}
+
+}  // namespace
+}  // namespace stanceplan
