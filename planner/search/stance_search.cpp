@@ -10,8 +10,8 @@
 #include "planner/io/plan_step.h"
 #include "planner/model/kinematics.h"
 #include "planner/search/candidates.h"
-#include "planner/search/parallel_for.h"
 #include "planner/solver/posture_solver.h"
+#include "planner/solver/solver_pool.h"
 
 namespace stanceplan {
 
@@ -88,6 +88,8 @@ SearchResult StanceSearch::run() {
   const Stance goal = scenario_.stance(scenario_.goal_stance);
   const GuidePath guide(system, scenario_.milestones, scenario_.milestone_masks);
   const int threads = options_.threads > 0 ? options_.threads : std::max(1u, std::thread::hardware_concurrency());
+  // Candidate solves run in worker processes (Ipopt is not thread-safe): made before any solve.
+  SolverPool pool(solver, threads);
   SearchResult result;
   std::vector<SearchNode>& tree = result.tree;
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -316,14 +318,7 @@ SearchResult StanceSearch::run() {
       r.q_init = a.attempt == 0 ? node.q() : a.attempt == 1 ? q_ref : perturbed(system, node.q(), a.node, a.attempt, i);
       r.q_ref = q_ref;
     }
-    parallel_for(int(batch.size()), threads, [&](int i) {
-      if (stopped()) {
-        results[i].status = PostureStatus::NumericalFailure;
-        results[i].message = "cancelled";
-        return;
-      }
-      results[i] = solver.solve(requests[i]);
-    });
+    results = pool.solve_all(requests, &cancelled_);
     for (size_t i = 0; i < batch.size(); ++i) {
       if (stopped()) return finish(PlanStatus::Cancelled, "cancelled");
       const Attempt& a = batch[i];

@@ -21,6 +21,9 @@ class PostureSolver {
   const SolverOptions& options() const { return options_; }
   const Scene& scene() const { return scene_; }
 
+  // Throws std::invalid_argument when the request is malformed (what solve() checks first).
+  void validate_request(const PostureRequest& request) const { validate(request); }
+
   // Candidate collision pairs that a request excludes: the links touching through its contacts.
   std::vector<bool> excluded_pairs(const PostureRequest& request) const;
 

@@ -1,0 +1,354 @@
+#include "planner/solver/solver_pool.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace stanceplan {
+namespace {
+
+// --- a minimal binary encoding (same binary on both ends: no byte-order concerns)
+class Writer {
+ public:
+  template <class T>
+  void pod(const T& v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof(T)); }
+  void text(const std::string& s) {
+    pod<uint64_t>(s.size());
+    bytes.append(s);
+  }
+  void vector(const Eigen::VectorXd& v) {
+    pod<uint64_t>(v.size());
+    bytes.append(reinterpret_cast<const char*>(v.data()), sizeof(double) * v.size());
+  }
+  void vec3(const Eigen::Vector3d& v) { for (int i = 0; i < 3; ++i) pod(v[i]); }
+  void placement(const std::optional<Placement>& p) {
+    pod<uint8_t>(p.has_value());
+    if (p) { pod(p->x); pod(p->y); pod(p->theta); }
+  }
+  std::string bytes;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& b) : bytes_(b) {}
+  template <class T>
+  T pod() {
+    if (at_ + sizeof(T) > bytes_.size()) throw std::runtime_error("solver pool: truncated message");
+    T v;
+    std::memcpy(&v, bytes_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return v;
+  }
+  std::string text() {
+    const auto n = pod<uint64_t>();
+    if (at_ + n > bytes_.size()) throw std::runtime_error("solver pool: truncated message");
+    std::string s = bytes_.substr(at_, n);
+    at_ += n;
+    return s;
+  }
+  Eigen::VectorXd vector() {
+    const auto n = pod<uint64_t>();
+    Eigen::VectorXd v(n);
+    for (uint64_t i = 0; i < n; ++i) v[i] = pod<double>();
+    return v;
+  }
+  Eigen::Vector3d vec3() { Eigen::Vector3d v; for (int i = 0; i < 3; ++i) v[i] = pod<double>(); return v; }
+  std::optional<Placement> placement() {
+    if (!pod<uint8_t>()) return std::nullopt;
+    Placement p;
+    p.x = pod<double>();
+    p.y = pod<double>();
+    p.theta = pod<double>();
+    return p;
+  }
+
+ private:
+  const std::string& bytes_;
+  size_t at_ = 0;
+};
+
+bool write_all(int fd, const char* data, size_t n) {
+  while (n > 0) {
+    const ssize_t w = ::write(fd, data, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    data += w;
+    n -= size_t(w);
+  }
+  return true;
+}
+
+bool read_all(int fd, char* data, size_t n) {
+  while (n > 0) {
+    const ssize_t r = ::read(fd, data, n);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    data += r;
+    n -= size_t(r);
+  }
+  return true;
+}
+
+bool send(int fd, const std::string& message) {
+  const uint64_t n = message.size();
+  return write_all(fd, reinterpret_cast<const char*>(&n), sizeof n) && write_all(fd, message.data(), n);
+}
+
+bool receive(int fd, std::string* message) {
+  uint64_t n = 0;
+  if (!read_all(fd, reinterpret_cast<char*>(&n), sizeof n)) return false;
+  message->resize(n);
+  return read_all(fd, message->data(), n);
+}
+
+PostureResult failure(const std::string& why) {
+  PostureResult r;
+  r.status = PostureStatus::NumericalFailure;
+  r.message = why;
+  return r;
+}
+
+}  // namespace
+
+std::string serialize(const PostureRequest& request) {
+  Writer w;
+  w.pod<uint64_t>(request.contacts.size());
+  for (const ContactTask& t : request.contacts) {
+    for (int v : {t.contact.s1.entity, t.contact.s1.index, t.contact.s2.entity, t.contact.s2.index}) w.pod<int32_t>(v);
+    w.pod<uint8_t>(t.contact.bilateral);
+    w.pod<uint8_t>(t.contact.fixed);
+    w.pod<uint8_t>(t.loaded);
+    w.placement(t.placement);
+    w.placement(t.placement_target);
+  }
+  w.vector(request.q_init);
+  w.vector(request.q_ref);
+  return w.bytes;
+}
+
+PostureRequest deserialize_request(const std::string& bytes) {
+  Reader r(bytes);
+  PostureRequest request;
+  const auto n = r.pod<uint64_t>();
+  for (uint64_t i = 0; i < n; ++i) {
+    ContactTask t;
+    t.contact.s1.entity = r.pod<int32_t>();
+    t.contact.s1.index = r.pod<int32_t>();
+    t.contact.s2.entity = r.pod<int32_t>();
+    t.contact.s2.index = r.pod<int32_t>();
+    t.contact.bilateral = r.pod<uint8_t>();
+    t.contact.fixed = r.pod<uint8_t>();
+    t.loaded = r.pod<uint8_t>();
+    t.placement = r.placement();
+    t.placement_target = r.placement();
+    request.contacts.push_back(t);
+  }
+  request.q_init = r.vector();
+  request.q_ref = r.vector();
+  return request;
+}
+
+std::string serialize(const PostureResult& result) {
+  Writer w;
+  w.pod<int32_t>(static_cast<int32_t>(result.status));
+  w.text(result.message);
+  w.vector(result.q);
+  w.pod<uint64_t>(result.forces.size());
+  for (const VertexForce& f : result.forces) {
+    w.pod<int32_t>(f.contact);
+    w.pod<int32_t>(f.vertex);
+    w.vec3(f.point_W);
+    w.vec3(f.force_W);
+  }
+  w.pod<uint64_t>(result.torques.size());
+  for (const Eigen::VectorXd& t : result.torques) w.vector(t);
+  w.pod<uint64_t>(result.placements.size());
+  for (const Placement& p : result.placements) w.placement(p);
+  w.pod<int32_t>(result.iterations);
+  w.pod(result.time_ms);
+  w.pod(result.objective);
+  w.pod<uint64_t>(result.residuals.size());
+  for (const auto& [family, value] : result.residuals) {
+    w.text(family);
+    w.pod(value);
+  }
+  w.text(result.blocking_family);
+  return w.bytes;
+}
+
+PostureResult deserialize_result(const std::string& bytes) {
+  Reader r(bytes);
+  PostureResult result;
+  result.status = static_cast<PostureStatus>(r.pod<int32_t>());
+  result.message = r.text();
+  result.q = r.vector();
+  const auto forces = r.pod<uint64_t>();
+  for (uint64_t i = 0; i < forces; ++i) {
+    VertexForce f;
+    f.contact = r.pod<int32_t>();
+    f.vertex = r.pod<int32_t>();
+    f.point_W = r.vec3();
+    f.force_W = r.vec3();
+    result.forces.push_back(f);
+  }
+  const auto torques = r.pod<uint64_t>();
+  for (uint64_t i = 0; i < torques; ++i) result.torques.push_back(r.vector());
+  const auto placements = r.pod<uint64_t>();
+  for (uint64_t i = 0; i < placements; ++i) result.placements.push_back(*r.placement());
+  result.iterations = r.pod<int32_t>();
+  result.time_ms = r.pod<double>();
+  result.objective = r.pod<double>();
+  const auto residuals = r.pod<uint64_t>();
+  for (uint64_t i = 0; i < residuals; ++i) {
+    const std::string family = r.text();
+    result.residuals[family] = r.pod<double>();
+  }
+  result.blocking_family = r.text();
+  return result;
+}
+
+SolverPool::SolverPool(const PostureSolver& solver, int processes) : solver_(solver) {
+  if (processes <= 1) return;
+  // A worker that died must not take the planner with it when the pool writes to its pipe.
+  signal(SIGPIPE, SIG_IGN);
+  void* shared = mmap(nullptr, sizeof(std::atomic<bool>), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  if (shared == MAP_FAILED) return;  // no pool: solve_all runs in this process
+  shared_cancel_ = new (shared) std::atomic<bool>(false);
+  for (int i = 0; i < processes; ++i) workers_.push_back(spawn());
+}
+
+std::vector<pid_t> SolverPool::worker_pids() const {
+  std::vector<pid_t> pids;
+  for (const Worker& w : workers_) pids.push_back(w.pid);
+  return pids;
+}
+
+SolverPool::~SolverPool() {
+  for (Worker& w : workers_) stop(w);
+  if (shared_cancel_) munmap(shared_cancel_, sizeof(std::atomic<bool>));
+}
+
+SolverPool::Worker SolverPool::spawn() {
+  int down[2], up[2];
+  if (pipe(down) != 0) return {};
+  if (pipe(up) != 0) {
+    close(down[0]);
+    close(down[1]);
+    return {};
+  }
+  const pid_t pid = fork();
+  if (pid == 0) {  // the worker: answer requests until the parent closes the pipe
+    close(down[1]);
+    close(up[0]);
+    for (const Worker& other : workers_) {
+      close(other.to_worker);
+      close(other.from_worker);
+    }
+    SolverOptions options = solver_.options();
+    options.cancel = shared_cancel_;
+    const PostureSolver solver(solver_.scene(), options);
+    std::string message;
+    while (receive(down[0], &message)) {
+      PostureResult result;
+      try {
+        result = solver.solve(deserialize_request(message));
+      } catch (const std::exception& e) {
+        result = failure(std::string("solver process: ") + e.what());
+      }
+      if (!send(up[1], serialize(result))) break;
+    }
+    _exit(0);
+  }
+  close(down[0]);
+  close(up[1]);
+  if (pid < 0) {
+    close(down[1]);
+    close(up[0]);
+    return {};
+  }
+  return {pid, down[1], up[0]};
+}
+
+// Sends a request to worker w, replacing it (once) when it has died.
+bool SolverPool::dispatch(size_t w, const std::string& message) {
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    if (workers_[w].pid <= 0) workers_[w] = spawn();
+    if (workers_[w].pid > 0 && send(workers_[w].to_worker, message)) return true;
+    stop(workers_[w]);
+  }
+  return false;
+}
+
+void SolverPool::stop(Worker& w) {
+  if (w.pid <= 0) return;
+  close(w.to_worker);
+  close(w.from_worker);
+  int status = 0;
+  waitpid(w.pid, &status, 0);
+  w = {};
+}
+
+std::vector<PostureResult> SolverPool::solve_all(const std::vector<PostureRequest>& requests,
+                                                 const std::atomic<bool>* cancel) {
+  std::vector<PostureResult> results(requests.size());
+  const auto cancelled = [&] { return cancel && cancel->load(); };
+  if (workers_.empty()) {
+    for (size_t i = 0; i < requests.size(); ++i)
+      results[i] = cancelled() ? failure("cancelled") : solver_.solve(requests[i]);
+    return results;
+  }
+  shared_cancel_->store(false);
+  // Validate in the parent, where a malformed request throws as it would in-process.
+  for (const PostureRequest& r : requests) solver_.validate_request(r);
+  std::vector<int> busy(workers_.size(), -1);  // request index per worker
+  size_t next = 0, done = 0;
+  while (done < requests.size()) {
+    for (size_t w = 0; w < workers_.size(); ++w) {
+      if (busy[w] >= 0 || next >= requests.size()) continue;
+      if (cancelled()) {
+        results[next++] = failure("cancelled");
+        ++done;
+        continue;
+      }
+      if (dispatch(w, serialize(requests[next]))) {
+        busy[w] = int(next++);
+      } else {
+        results[next++] = failure("no solver process could be started");
+        ++done;
+      }
+    }
+    if (done >= requests.size()) break;
+    std::vector<pollfd> fds;
+    std::vector<size_t> owners;
+    for (size_t w = 0; w < workers_.size(); ++w)
+      if (busy[w] >= 0) {
+        fds.push_back({workers_[w].from_worker, POLLIN, 0});
+        owners.push_back(w);
+      }
+    if (fds.empty()) continue;
+    if (poll(fds.data(), fds.size(), 50) < 0 && errno != EINTR) break;
+    if (cancelled()) shared_cancel_->store(true);
+    for (size_t k = 0; k < fds.size(); ++k) {
+      if (!(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const size_t w = owners[k];
+      std::string message;
+      if (receive(workers_[w].from_worker, &message)) {
+        results[busy[w]] = deserialize_result(message);
+      } else {
+        results[busy[w]] = failure("the solver process died");
+        stop(workers_[w]);
+      }
+      busy[w] = -1;
+      ++done;
+    }
+  }
+  return results;
+}
+
+}  // namespace stanceplan
