@@ -28,6 +28,17 @@ void append_force_columns(const NlpLayout& layout, int task, std::vector<int>* c
   for (int i = 0; i < block.size(); ++i) columns->push_back(block.first_column + i);
 }
 
+void append_loaded_contact_columns(const NlpState& state, int entity, std::vector<int>* columns) {
+  for (int t = 0; t < static_cast<int>(state.constants.size()); ++t) {
+    if (state.layout.force_block_of_task[t] < 0) continue;
+    const ContactConstants& c = state.constants[t];
+    if (c.e1 != entity && c.e2 != entity) continue;
+    append_link_columns(state.scene.system, c.e1, c.l1, columns);
+    append_link_columns(state.scene.system, c.e2, c.l2, columns);
+    append_force_columns(state.layout, t, columns);
+  }
+}
+
 void sort_unique(std::vector<int>* columns) {
   std::sort(columns->begin(), columns->end());
   columns->erase(std::unique(columns->begin(), columns->end()), columns->end());

@@ -34,5 +34,8 @@ void append_link_columns(const System& system, int entity, int link, std::vector
 void append_entity_columns(const System& system, int entity, std::vector<int>* columns);
 void append_force_columns(const NlpLayout& layout, int task, std::vector<int>* columns);
 void sort_unique(std::vector<int>* columns);
+// Columns every loaded contact touching `entity` brings in: what moves its s1, its s2 (the cone
+// generators turn with s2's link) and its force coefficients.
+void append_loaded_contact_columns(const NlpState& state, int entity, std::vector<int>* columns);
 
 }  // namespace stanceplan

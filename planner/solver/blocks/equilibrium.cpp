@@ -18,10 +18,8 @@ EquilibriumBlock::EquilibriumBlock(const NlpState& state, int entity)
       if (c.e1 == entity) received_.push_back({t, j, 1.0});
       if (c.e2 == entity) received_.push_back({t, j, -1.0});
     }
-    append_link_columns(system, c.e1, c.l1, &columns_);
-    append_link_columns(system, c.e2, c.l2, &columns_);
-    append_force_columns(state.layout, t, &columns_);
   }
+  append_loaded_contact_columns(state, entity, &columns_);
   sort_unique(&columns_);
 }
 

@@ -15,14 +15,7 @@ TorqueLimitBlock::TorqueLimitBlock(const NlpState& state, int entity)
     efforts_.push_back(effort);
   }
   append_entity_columns(system, entity, &columns_);
-  for (int t = 0; t < static_cast<int>(state.constants.size()); ++t) {
-    if (state.layout.force_block_of_task[t] < 0) continue;
-    const ContactConstants& c = state.constants[t];
-    if (c.e1 != entity && c.e2 != entity) continue;
-    append_link_columns(system, c.e1, c.l1, &columns_);
-    append_link_columns(system, c.e2, c.l2, &columns_);
-    append_force_columns(state.layout, t, &columns_);
-  }
+  append_loaded_contact_columns(state, entity, &columns_);
   sort_unique(&columns_);
 }
 
