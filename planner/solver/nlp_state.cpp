@@ -163,7 +163,7 @@ void NlpState::add_entity_term(int entity, const Eigen::MatrixXd& J, const Eigen
                                RowRef row) const {
   const int nq = static_cast<int>(J.cols());
   if (nq == 0) return;
-  row.segment(scene.system.offset(entity), nq) += c.transpose() * J;
+  row.segment(scene.system.offset(entity), nq).noalias() += c.transpose() * J;
 }
 
 void NlpState::add_force_term(int task, int vertex, const Eigen::Vector3d& c,

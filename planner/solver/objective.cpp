@@ -40,7 +40,7 @@ void Objective::gradient(NlpState& state, Eigen::Ref<Eigen::VectorXd> grad) cons
     state.ensure_torques();
     for (size_t e = 0; e < state.tau.size(); ++e)
       if (state.tau[e].size() > 0)
-        grad += 2.0 * o.w_torque * (state.dtau_dx[e].transpose() * state.tau[e]);
+        grad.noalias() += (2.0 * o.w_torque) * state.dtau_dx[e].transpose() * state.tau[e];
   }
   if (targeted_tasks_.empty()) return;
   state.ensure_jacobians();
