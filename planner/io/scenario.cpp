@@ -353,15 +353,9 @@ class ScenarioReader {
     if (!node) return;
     expect_keys(node, "search", {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
                                  "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
-                                 "max_retries", "contact_pairs"});
-    if (const YAML::Node pairs = node["contact_pairs"]) {
-      if (!pairs.IsSequence()) fail(pairs, "search.contact_pairs", "expected a list of [s1 pattern, s2 pattern]");
-      for (size_t i = 0; i < pairs.size(); ++i) {
-        const std::string f = "search.contact_pairs[" + std::to_string(i) + "]";
-        if (!pairs[i].IsSequence() || pairs[i].size() != 2) fail(pairs[i], f, "expected [s1 pattern, s2 pattern]");
-        s.search.contact_pairs.emplace_back(text(pairs[i][0], f), text(pairs[i][1], f));
-      }
-    }
+                                 "max_retries", "contact_pairs", "last_contacts"});
+    read_patterns(node, "contact_pairs", &s.search.contact_pairs);
+    read_patterns(node, "last_contacts", &s.search.last_contacts);
     if (node["contact_reach"]) s.search.contact_reach = positive(node["contact_reach"], "search.contact_reach");
     if (node["self_contacts"]) s.search.self_contacts = boolean(node["self_contacts"], "search.self_contacts");
     if (node["placement_tolerance"]) s.search.placement_tolerance = positive(node["placement_tolerance"], "search.placement_tolerance");
@@ -372,6 +366,19 @@ class ScenarioReader {
     if (node["time_limit"]) s.search.time_limit_s = positive(node["time_limit"], "search.time_limit");
     if (node["milestone_tolerance"]) s.search.milestone_tolerance = positive(node["milestone_tolerance"], "search.milestone_tolerance");
     if (node["threads"]) s.search.threads = integer(node["threads"], "search.threads", 0);
+  }
+
+  void read_patterns(const YAML::Node& search, const std::string& key,
+                     std::vector<std::pair<std::string, std::string>>* out) const {
+    const YAML::Node pairs = search[key];
+    if (!pairs) return;
+    const std::string field = "search." + key;
+    if (!pairs.IsSequence()) fail(pairs, field, "expected a list of [s1 pattern, s2 pattern]");
+    for (size_t i = 0; i < pairs.size(); ++i) {
+      const std::string f = field + "[" + std::to_string(i) + "]";
+      if (!pairs[i].IsSequence() || pairs[i].size() != 2) fail(pairs[i], f, "expected [s1 pattern, s2 pattern]");
+      out->emplace_back(text(pairs[i][0], f), text(pairs[i][1], f));
+    }
   }
 
   void read_solver(const YAML::Node& node, Scenario& s) const {

@@ -48,14 +48,26 @@ bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int rem
   return false;
 }
 
-bool allowed_pair(const Scene& scene, const Contact& c, const SearchOptions& options) {
-  if (options.contact_pairs.empty()) return true;
+bool matches(const Scene& scene, const Contact& c, const std::vector<std::pair<std::string, std::string>>& patterns) {
   const std::string s1 = scene.surfaces.id(scene.system, c.s1), s2 = scene.surfaces.id(scene.system, c.s2);
-  for (const auto& [p1, p2] : options.contact_pairs)
+  for (const auto& [p1, p2] : patterns)
     if ((fnmatch(p1.c_str(), s1.c_str(), 0) == 0 && fnmatch(p2.c_str(), s2.c_str(), 0) == 0) ||
         (fnmatch(p1.c_str(), s2.c_str(), 0) == 0 && fnmatch(p2.c_str(), s1.c_str(), 0) == 0))
       return true;
   return false;
+}
+
+bool allowed_pair(const Scene& scene, const Contact& c, const SearchOptions& options) {
+  return options.contact_pairs.empty() || matches(scene, c, options.contact_pairs);
+}
+
+// A "last" contact waits until every other goal contact is in the stance.
+bool allowed_now(const Scene& scene, const Contact& c, const Stance& stance, const Stance& goal,
+                 const SearchOptions& options) {
+  if (options.last_contacts.empty() || !matches(scene, c, options.last_contacts)) return true;
+  for (const Contact& g : goal.contacts())
+    if (!matches(scene, g, options.last_contacts) && stance.find(g) < 0) return false;
+  return true;
 }
 
 }  // namespace
@@ -117,7 +129,7 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       if (in_goal >= 0) c = goal.contacts()[in_goal];
       else if (in_goal_reversed >= 0) c = goal.contacts()[in_goal_reversed];
       if (stance.find(c) >= 0 || stance.uses_surface(c.s1) || used_as_s1(c.s2)) continue;
-      if (!allowed_pair(scene, c, options)) continue;
+      if (!allowed_pair(scene, c, options) || !allowed_now(scene, c, stance, goal, options)) continue;
       if (surface_gap(scene, data, c.s1, c.s2) > options.contact_reach) continue;
       out.push_back({true, c});
     }

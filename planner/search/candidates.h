@@ -12,7 +12,9 @@
 //  - two surfaces of one entity unless SearchOptions::self_contacts (option);
 //  - surfaces farther apart than SearchOptions::contact_reach at the node's configuration: one
 //    transition moves a link by a bounded amount (option);
-//  - pairs not matching SearchOptions::contact_pairs, when the scenario lists them (option).
+//  - pairs not matching SearchOptions::contact_pairs, when the scenario lists them (option);
+//  - pairs matching SearchOptions::last_contacts before every other goal contact is in the
+//    stance (option).
 #include <vector>
 
 #include "planner/contact/contact.h"

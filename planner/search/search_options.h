@@ -19,6 +19,9 @@ struct SearchOptions {
   // When not empty, only these surface pairs are offered as new contacts: ("s1 id", "s2 id"),
   // each a pattern where * matches any run of characters ("robot/*_sole", "env/floor").
   std::vector<std::pair<std::string, std::string>> contact_pairs;
+  // Contacts (same patterns) offered only once every other goal contact is in the stance: e.g.
+  // forearms on a desk, which pin the upper body and would keep the robot from sitting down.
+  std::vector<std::pair<std::string, std::string>> last_contacts;
   // Loop avoidance: a stance is already in the tree when it has the same contacts at placements
   // within these tolerances.
   double placement_tolerance = 0.03;    // m

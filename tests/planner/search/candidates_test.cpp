@@ -1,0 +1,55 @@
+// Candidate enumeration (Adj+ / Adj-) and its documented pruning options.
+#include <gtest/gtest.h>
+
+#include "planner/model/kinematics.h"
+#include "planner/search/candidates.h"
+#include "tests/support/scenes.h"
+
+namespace stanceplan {
+namespace {
+
+// True when the list adds (add) or removes (!add) the contact of surface s1 on the floor (soles)
+// or on the wall (palms).
+bool offers(const std::vector<Candidate>& list, const Scene& scene, const std::string& s1, bool add) {
+  const std::string s2 = s1.find("palm") != std::string::npos ? "env/wall" : "env/floor";
+  for (const Candidate& c : list)
+    if (c.add == add && scene.surfaces.id(scene.system, c.contact.s1) == s1 &&
+        scene.surfaces.id(scene.system, c.contact.s2) == s2)
+      return true;
+  return false;
+}
+
+TEST(Candidates, PruningRulesAndOptions) {
+  const Scene scene = test::humanoid_scene("wall");
+  const auto data = system_kinematics(scene.system, test::standing_configuration(scene));
+  const Contact left = test::task(scene, "robot/l_sole", "env/floor").contact;
+  const Contact right = test::task(scene, "robot/r_sole", "env/floor").contact;
+  const Contact palm = test::task(scene, "robot/r_palm", "env/wall").contact;
+  const Stance goal({left, right, palm});
+  SearchOptions options;
+  options.contact_reach = 2.0;  // everything within reach
+  // Standing on the left foot: the last support is never removed; the right foot may be added.
+  auto on_left = enumerate_candidates(scene, data, Stance({left}), goal, options);
+  EXPECT_FALSE(offers(on_left, scene, "robot/l_sole", false));
+  EXPECT_TRUE(offers(on_left, scene, "robot/r_sole", true));
+  EXPECT_TRUE(offers(on_left, scene, "robot/r_palm", true));
+  // last_contacts: the palm only once both feet (the other goal contacts) are down.
+  options.last_contacts = {{"robot/*_palm", "env/wall"}};
+  on_left = enumerate_candidates(scene, data, Stance({left}), goal, options);
+  EXPECT_FALSE(offers(on_left, scene, "robot/r_palm", true));
+  EXPECT_TRUE(offers(enumerate_candidates(scene, data, Stance({left, right}), goal, options), scene, "robot/r_palm", true));
+  // contact_pairs: only the listed pairs.
+  options = SearchOptions{};
+  options.contact_reach = 2.0;
+  options.contact_pairs = {{"robot/*_sole", "env/floor"}};
+  on_left = enumerate_candidates(scene, data, Stance({left}), goal, options);
+  EXPECT_TRUE(offers(on_left, scene, "robot/r_sole", true));
+  EXPECT_FALSE(offers(on_left, scene, "robot/r_palm", true));
+  // contact_reach: the hanging palms are farther than 0.3 m from the wall (x = 0.6 m).
+  options = SearchOptions{};
+  options.contact_reach = 0.3;
+  EXPECT_FALSE(offers(enumerate_candidates(scene, data, Stance({left}), goal, options), scene, "robot/r_palm", true));
+}
+
+}  // namespace
+}  // namespace stanceplan
