@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev coinor-libipopt-dev libfcl-dev liburdfdom-dev libassimp-dev
   libosmesa6-dev libimgui-dev libglfw3-dev libgl-dev libglx-dev libopengl-dev
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev libstb-dev libpng-dev
-  libqhull-dev libgtest-dev libbenchmark-dev
+  libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
 )
