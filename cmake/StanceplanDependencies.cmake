@@ -8,7 +8,6 @@ find_package(assimp REQUIRED)
 find_package(yaml-cpp REQUIRED)       # target `yaml-cpp` (0.7 has no namespaced target)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
-find_package(tinyxml2 QUIET)
 find_package(Qhull REQUIRED)          # libqhull-dev: convex hulls of collision meshes
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)  # also every gl* entry point: never link libGL
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)        # stb_truetype for captions (built into libstb)
