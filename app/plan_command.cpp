@@ -1,6 +1,9 @@
 #include "app/plan_command.h"
 
+#include <signal.h>
 #include <unistd.h>
+
+#include <atomic>
 
 #include <cstdio>
 #include <iomanip>
@@ -14,6 +17,35 @@
 
 namespace stanceplan::app {
 namespace {
+
+// SIGINT / SIGTERM cancel the running search (its cancel flag is an atomic store, which is
+// async-signal-safe); the search then stops before its next solver iteration.
+std::atomic<StanceSearch*> g_running{nullptr};
+
+extern "C" void cancel_running_search(int) {
+  if (StanceSearch* search = g_running.load()) search->cancel();
+}
+
+// Installs the handlers for the lifetime of one search, restoring the previous ones after.
+class CancelOnSignal {
+ public:
+  explicit CancelOnSignal(StanceSearch& search) {
+    g_running = &search;
+    struct sigaction action {};
+    action.sa_handler = cancel_running_search;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &previous_int_);
+    sigaction(SIGTERM, &action, &previous_term_);
+  }
+  ~CancelOnSignal() {
+    sigaction(SIGINT, &previous_int_, nullptr);
+    sigaction(SIGTERM, &previous_term_, nullptr);
+    g_running = nullptr;
+  }
+
+ private:
+  struct sigaction previous_int_ {}, previous_term_ {};
+};
 
 std::string describe(const Scene& scene, const Stance& stance) {
   std::string out = "{";
@@ -49,7 +81,10 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
           << solver_calls << "   " << std::flush;
     }
   });
-  const SearchResult result = planner.run();
+  const SearchResult result = [&] {
+    CancelOnSignal on_signal(planner);
+    return planner.run();
+  }();
   if (live && !options.verbose) err << "\n";
   if (result.status != PlanStatus::Found) {
     err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message << "\n";

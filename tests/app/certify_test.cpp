@@ -111,3 +111,24 @@ TEST(PlanCommand, AnUnreachableGoalExitsTwoWithAReason) {
 
 }  // namespace
 }  // namespace stanceplan
+
+namespace stanceplan {
+namespace {
+
+// SIGINT during planning stops the search cleanly: exit 2, "cancelled", and no plan file.
+TEST(PlanCommand, SigintStopsTheSearchCleanly) {
+  const std::string out = (test::temp_dir("sigint") / "plan.json").string();
+  const std::string command = std::string(STANCEPLAN_BINARY) + " plan " +
+                              test::source_path("tests/data/high_platform/unreachable.yaml") + " --out " + out +
+                              " --max-nodes 1000 2> " + out + ".err & pid=$!; sleep 1; kill -INT $pid; wait $pid";
+  const int status = std::system(("bash -c '" + command + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream err(out + ".err");
+  const std::string text((std::istreambuf_iterator<char>(err)), {});
+  EXPECT_THAT(text, HasSubstr("no plan found (cancelled)"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace stanceplan
