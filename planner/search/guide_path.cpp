@@ -9,10 +9,6 @@ GuidePath::GuidePath(const System& system, std::vector<Eigen::VectorXd> mileston
                      std::vector<Eigen::VectorXd> masks, GuideMetric metric)
     : system_(system), milestones_(std::move(milestones)), masks_(std::move(masks)), metric_(metric) {}
 
-double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
-  return distance(a, b, nullptr);
-}
-
 double GuidePath::distance_to(const Eigen::VectorXd& q, int t) const {
   return distance(q, milestones_.at(t), t < int(masks_.size()) ? &masks_[t] : nullptr);
 }

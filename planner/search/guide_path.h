@@ -23,13 +23,13 @@ class GuidePath {
 
   int size() const { return static_cast<int>(milestones_.size()); }
   const Eigen::VectorXd& milestone(int t) const { return milestones_.at(t); }
-  // Weighted configuration distance (root position, root rotation angle, joints).
-  double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
-  // Distance from q to milestone t over the entries it states.
+  // Weighted distance from q to milestone t (root position, root rotation angle, joints) over the
+  // entries the milestone states.
   double distance_to(const Eigen::VectorXd& q, int t) const;
 
  private:
   const System& system_;
+  // mask == nullptr: every entry.
   double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b, const Eigen::VectorXd* mask) const;
 
   std::vector<Eigen::VectorXd> milestones_;

@@ -183,6 +183,12 @@ SearchResult StanceSearch::run() {
     }
     return best;
   };
+  // Every failure after the root: report the node closest to the goal (computed once, here).
+  auto give_up = [&](PlanStatus status, std::string message) {
+    result.closest_node = closest();
+    result.milestone = t;
+    return finish(status, std::move(message));
+  };
   // Advances t past every milestone the tree already reaches; publishes each.
   auto advance_milestones = [&] {
     bool advanced = true;
@@ -233,7 +239,7 @@ SearchResult StanceSearch::run() {
     e.forces = tree[0].step.forces;
     e.time_ms = root_result.time_ms;
     e.nodes = 1;
-    if (!publish(e)) return finish(PlanStatus::Cancelled, "cancelled");
+    if (!publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
   }
   advance_milestones();
   if (is_goal(tree[0])) return found(0);
@@ -243,13 +249,11 @@ SearchResult StanceSearch::run() {
   // other initial guesses; the others when the open queue is empty.
   std::deque<Attempt> urgent, retries;
   while (true) {
-    result.closest_node = closest();
-    result.milestone = t;
-    if (stopped()) return finish(PlanStatus::Cancelled, "cancelled");
+    if (stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
     if (elapsed() > options_.time_limit_s)
-      return finish(PlanStatus::TimeBudget, "no plan within " + std::to_string(options_.time_limit_s) + " s");
+      return give_up(PlanStatus::TimeBudget, "no plan within " + std::to_string(options_.time_limit_s) + " s");
     if (result.nodes_expanded >= options_.max_nodes)
-      return finish(PlanStatus::NodeBudget, "no plan within " + std::to_string(options_.max_nodes) + " expanded nodes");
+      return give_up(PlanStatus::NodeBudget, "no plan within " + std::to_string(options_.max_nodes) + " expanded nodes");
     std::vector<Attempt> batch;
     if (!urgent.empty()) {
       batch.assign(urgent.begin(), urgent.end());
@@ -272,7 +276,7 @@ SearchResult StanceSearch::run() {
       e.forces = tree[n].step.forces;
       e.milestone = t;
       e.nodes = int(tree.size());
-      if (!publish(e)) return finish(PlanStatus::Cancelled, "cancelled");
+      if (!publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
       const auto data = system_kinematics(system, tree[n].q());
       for (const Candidate& c : enumerate_candidates(scene, data, tree[n].stance(), goal, options_))
         batch.push_back({n, c, 0});
@@ -282,7 +286,7 @@ SearchResult StanceSearch::run() {
       batch.assign(retries.begin(), retries.end());
       retries.clear();
     } else {
-      return finish(PlanStatus::Exhausted, "every reachable stance was tried");
+      return give_up(PlanStatus::Exhausted, "every reachable stance was tried");
     }
 
     // Solve the batch, in parallel; results are used in batch order (deterministic).
@@ -320,7 +324,7 @@ SearchResult StanceSearch::run() {
     }
     results = pool.solve_all(requests, &cancelled_);
     for (size_t i = 0; i < batch.size(); ++i) {
-      if (stopped()) return finish(PlanStatus::Cancelled, "cancelled");
+      if (stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
       const Attempt& a = batch[i];
       const PostureResult& r = results[i];
       ++result.solver_calls;
@@ -358,7 +362,7 @@ SearchResult StanceSearch::run() {
       }
       e.milestone = t;
       e.nodes = int(tree.size());
-      if (!publish(e)) return finish(PlanStatus::Cancelled, "cancelled");
+      if (!publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
       if (e.accepted) {
         if (is_goal(tree[e.node])) return found(e.node);
         advance_milestones();
