@@ -614,8 +614,8 @@ def surfaces_yaml(title, surfaces):
 # Environments
 
 FLOOR = dict(size=(8.0, 6.0, 0.05), center_xy=(1.5, 0.0))   # x -2.5..5.5, y -3..3, top at z = 0
-DESK = dict(x=2.30, top=0.72, board=(0.70, 1.20, 0.03), leg=0.05, leg_inset=0.03)
-CHAIR = dict(x=1.595, seat_top=0.42, seat=(0.45, 0.45, 0.04), leg=0.035, back=(0.03, 0.43))
+DESK = dict(x=2.35, top=0.78, board=(0.70, 1.20, 0.03), leg=0.05, leg_inset=0.03)
+CHAIR = dict(x=1.52, seat_top=0.42, seat=(0.45, 0.45, 0.04), leg=0.035, back=(0.03, 0.43))
 WALL = dict(x=0.60, size=(0.10, 3.0, 2.0))
 DENSITY = dict(floor=1000.0, wood=600.0, wall=1500.0)
 
@@ -821,7 +821,7 @@ def seated_posture(m, surfaces, env):
                 ("l_elbow_p_link", "desk", 0), ("r_elbow_p_link", "desk", 0),
                 ("l_foot", "floor", 0), ("r_foot", "floor", 0)}
     best = None
-    for ci in range(0, 15):
+    for ci in range(0, 21):
         lean = 0.05 * ci
         q = {}
         for side in ("l", "r"):

@@ -287,11 +287,16 @@ class ScenarioReader {
       const std::string f = "guide[" + std::to_string(i) + "]";
       if (!node[i].IsMap()) fail(node[i], f, "expected a mapping entity name: configuration");
       double tolerance = 0.0;
+      std::vector<std::pair<std::string, std::string>> pairs;
       Eigen::VectorXd stated = Eigen::VectorXd::Zero(q.size());
       for (const auto& item : node[i]) {
         const std::string name = item.first.as<std::string>();
         if (name == "tolerance") {
           tolerance = positive(item.second, f + ".tolerance");
+          continue;
+        }
+        if (name == "contacts") {
+          read_patterns(item.second, f + ".contacts", &pairs);
           continue;
         }
         const int e = s.scene.system.find_entity(name);
@@ -301,6 +306,7 @@ class ScenarioReader {
       s.milestones.push_back(q);
       s.milestone_masks.push_back(stated);
       s.milestone_tolerances.push_back(tolerance);
+      s.milestone_contact_pairs.push_back(std::move(pairs));
     }
   }
 
@@ -354,8 +360,8 @@ class ScenarioReader {
     expect_keys(node, "search", {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
                                  "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
                                  "max_retries", "contact_pairs", "last_contacts"});
-    read_patterns(node, "contact_pairs", &s.search.contact_pairs);
-    read_patterns(node, "last_contacts", &s.search.last_contacts);
+    if (node["contact_pairs"]) read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
+    if (node["last_contacts"]) read_patterns(node["last_contacts"], "search.last_contacts", &s.search.last_contacts);
     if (node["contact_reach"]) s.search.contact_reach = positive(node["contact_reach"], "search.contact_reach");
     if (node["self_contacts"]) s.search.self_contacts = boolean(node["self_contacts"], "search.self_contacts");
     if (node["placement_tolerance"]) s.search.placement_tolerance = positive(node["placement_tolerance"], "search.placement_tolerance");
@@ -368,11 +374,8 @@ class ScenarioReader {
     if (node["threads"]) s.search.threads = integer(node["threads"], "search.threads", 0);
   }
 
-  void read_patterns(const YAML::Node& search, const std::string& key,
+  void read_patterns(const YAML::Node& pairs, const std::string& field,
                      std::vector<std::pair<std::string, std::string>>* out) const {
-    const YAML::Node pairs = search[key];
-    if (!pairs) return;
-    const std::string field = "search." + key;
     if (!pairs.IsSequence()) fail(pairs, field, "expected a list of [s1 pattern, s2 pattern]");
     for (size_t i = 0; i < pairs.size(); ++i) {
       const std::string f = field + "[" + std::to_string(i) + "]";

@@ -31,6 +31,9 @@ struct Scenario {
   std::vector<StanceContact> goal_stance;
   std::vector<Eigen::VectorXd> milestones;  // full configurations, partial ones completed
   std::vector<double> milestone_tolerances;  // per milestone; 0: search.milestone_tolerance
+  // Per milestone: the contact pairs offered while it is the target (same patterns as
+  // search.contact_pairs); empty: search.contact_pairs.
+  std::vector<std::vector<std::pair<std::string, std::string>>> milestone_contact_pairs;
   // Per milestone, 1 for every entry of q the milestone states (a partial milestone constrains
   // only what it states; the rest of `milestones[i]` only completes the solver's reference).
   std::vector<Eigen::VectorXd> milestone_masks;

@@ -150,6 +150,14 @@ SearchResult StanceSearch::run() {
     const bool final_approach = t + 1 >= guide.size();
     return d + (final_approach ? options_.stance_weight * stance_difference(n.stance(), goal) : 0.0);
   };
+  // A milestone may state which contacts are offered while it is the target (a phase of the task:
+  // soles only while walking, thighs once sitting down).
+  auto options_for_milestone = [&](int m) {
+    SearchOptions o = options_;
+    const auto& phases = scenario_.milestone_contact_pairs;
+    if (m < int(phases.size()) && !phases[m].empty()) o.contact_pairs = phases[m];
+    return o;
+  };
   auto is_goal = [&](const SearchNode& n) {
     if (stance_difference(n.stance(), goal) != 0) return false;
     for (const StanceContact& g : scenario_.goal_stance) {
@@ -278,7 +286,7 @@ SearchResult StanceSearch::run() {
       e.nodes = int(tree.size());
       if (!publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
       const auto data = system_kinematics(system, tree[n].q());
-      for (const Candidate& c : enumerate_candidates(scene, data, tree[n].stance(), goal, options_))
+      for (const Candidate& c : enumerate_candidates(scene, data, tree[n].stance(), goal, options_for_milestone(t)))
         batch.push_back({n, c, 0});
     } else if (!retries.empty()) {
       // Backtracking (METHOD.md section 3): the queue is empty, so retry earlier failures from

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 #include "planner/collision/signed_distance.h"
@@ -28,6 +30,26 @@ std::vector<double> pair_distances(const Scene& scene, const Eigen::VectorXd& q,
     d[p] = signed_distance(model, work, int(p)).distance;
   }
   return d;
+}
+
+// " (closest pair: robot/l_knee_p_link / env/chair at -0.004 m)" for the pair nearest to
+// violating the margin at q, or "" when none is closer than the margin.
+std::string closest_pair(const Scene& scene, const Eigen::VectorXd& q, const std::vector<bool>& excluded,
+                         double margin) {
+  const std::vector<double> d = pair_distances(scene, q, excluded, margin);
+  const auto worst = std::min_element(d.begin(), d.end());
+  if (worst == d.end() || !(*worst < margin)) return "";
+  const CollisionModel& model = *scene.collision;
+  const CollisionPair& pair = model.pairs()[size_t(worst - d.begin())];
+  auto name = [&](int l) {
+    const CollisionLink& link = model.links()[size_t(l)];
+    const Entity& e = scene.system.entity(link.entity);
+    return e.name + "/" + e.model->links[size_t(link.link)].name;
+  };
+  std::ostringstream out;
+  out << " (closest pair: " << name(pair.a) << " / " << name(pair.b) << " at " << std::fixed << std::setprecision(3)
+      << *worst << " m)";
+  return out.str();
 }
 
 void normalise_quaternions(const System& system, Eigen::VectorXd& q) {
@@ -232,8 +254,11 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
     request.q_init = result.q;
   }
   if (result.q.size() == scene_.system.nq()) normalise_quaternions(scene_.system, result.q);
-  if (result.status != PostureStatus::Solved && !result.residuals.empty())
+  if (result.status != PostureStatus::Solved && !result.residuals.empty()) {
     result.message += "; worst violated family: " + result.worst_family();
+    if (collisions && result.worst_family() == "collision" && result.q.size() == scene_.system.nq())
+      result.message += closest_pair(scene_, result.q, excluded, options.collision_margin);
+  }
   result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -75,6 +75,22 @@ TEST_F(ScenarioFaults, AValidScenarioLoads) {
   EXPECT_NEAR(s.milestones[0][7 + m.find_dof("l_knee_p")], 0.4, 1e-12);  // completed from the initial one
 }
 
+TEST_F(ScenarioFaults, AMilestoneStatesTheContactsOfferedWhileItIsTheTarget) {
+  const Scenario s = load_scenario(write(header() + stances() +
+                                         "guide:\n"
+                                         "  - robot: {base_position: [0.3, 0, 0.9]}\n"
+                                         "    contacts: [[robot/*_sole, env/floor], [robot/l_hand, env/*]]\n"
+                                         "  - robot: {base_position: [0.6, 0, 0.9]}\n"));
+  ASSERT_EQ(s.milestone_contact_pairs.size(), 2u);
+  using Pairs = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(s.milestone_contact_pairs[0], (Pairs{{"robot/*_sole", "env/floor"}, {"robot/l_hand", "env/*"}}));
+  EXPECT_TRUE(s.milestone_contact_pairs[1].empty());  // the search's contact_pairs apply
+  EXPECT_EQ(error_of(header() + stances() + "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    contacts: [robot/l_sole]\n"),
+            path_ + ":22: guide[0].contacts[0]: expected [s1 pattern, s2 pattern]");
+  EXPECT_EQ(error_of(header() + stances() + "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    contacts: robot/l_sole\n"),
+            path_ + ":22: guide[0].contacts: expected a list of [s1 pattern, s2 pattern]");
+}
+
 TEST_F(ScenarioFaults, AnUnknownSurfaceIsNamedWithLineAndField) {
   std::string text = header() + stances();
   text.replace(text.find("s1: robot/r_sole, s2: env/floor"), 31, "s1: robot/r_sole, s2: env/flor");

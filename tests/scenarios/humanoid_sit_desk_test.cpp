@@ -1,0 +1,54 @@
+// The paper's first scenario (METHOD.md section 5.1), humanoid_sit_desk.yaml: the humanoid walks to
+// the desk, sits down and lays its forearms on the desk. The plan must be found within the
+// scenario's own budget and pass the independent checker; its shape is checked too.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "planner/certify/certify.h"
+#include "planner/io/plan_reader.h"
+#include "planner/io/plan_writer.h"
+#include "planner/search/stance_search.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan {
+namespace {
+
+TEST(HumanoidSitDesk, PlansWalksSitsAndCertifies) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_sit_desk.yaml"));
+  SearchOptions options = scenario.search;
+  options.threads = 2;
+  const SearchResult result = StanceSearch(scenario, options).run();
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+
+  const std::string path = (test::temp_dir("sit_desk") / "plan.json").string();
+  write_plan(result.plan, scenario, path);
+  const CertifyReport report = certify(read_plan(path));
+  for (const CheckResult& c : report.checks)
+    EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": " << c.detail;
+
+  // Walking (every step before the first thigh lands) uses the soles only, as the guide's walking
+  // milestones state; then the thighs land before the forearms, which come last.
+  const Scene& scene = scenario.scene;
+  const auto& steps = result.plan.steps;
+  auto changed = [&](size_t i) { return scene.surfaces.id(scene.system, steps[i].changed->s1); };
+  size_t first_thigh = 0;
+  for (size_t i = 1; i < steps.size() && first_thigh == 0; ++i)
+    if (changed(i).find("_thigh") != std::string::npos) first_thigh = i;
+  ASSERT_GT(first_thigh, 10u) << "the robot walks about 2 m before it sits";
+  for (size_t i = 1; i < first_thigh; ++i) EXPECT_NE(changed(i).find("_sole"), std::string::npos) << i << " " << changed(i);
+  ASSERT_GE(steps.size(), 3u);
+  const std::set<std::string> last_two = {changed(steps.size() - 1), changed(steps.size() - 2)};
+  EXPECT_EQ(last_two, (std::set<std::string>{"robot/l_forearm", "robot/r_forearm"}));
+  EXPECT_EQ(steps.back().stance.size(), 6);
+
+  // Seated: the waist is above the seat (x 1.295 to 1.745 m, top at z = 0.42 m), in front of the desk.
+  const Eigen::VectorXd& q = steps.back().q;
+  EXPECT_GT(q[0], 1.295);
+  EXPECT_LT(q[0], 1.745);
+  EXPECT_LT(q[2], 0.75);
+}
+
+}  // namespace
+}  // namespace stanceplan
