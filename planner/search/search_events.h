@@ -5,8 +5,10 @@
 #include <Eigen/Core>
 #include <condition_variable>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "planner/contact/contact.h"
 #include "planner/solver/posture_result.h"
@@ -33,6 +35,10 @@ struct SearchEvent {
   std::vector<PlanContact> contacts;  // touched at q, with which carry force
   std::vector<VertexForce> forces;    // VertexForce::contact indexes `contacts`
   double time_ms = 0.0;  // candidates: solver time
+  // Candidates and expansions: the solve's figures, for inspection (the GUI's node view).
+  int iterations = 0;
+  std::vector<Eigen::VectorXd> torques;       // per entity (empty for entities without dofs)
+  std::map<std::string, double> residuals;    // candidates: worst violation per family
   int milestone = 0;     // the milestone index targeted after this event
   int nodes = 0;         // tree size after this event
 };
