@@ -11,7 +11,34 @@
 namespace stanceplan::render {
 namespace {
 
+// Size of what moves: the diagonal of the box of the link origins of every robot and object over
+// the plan's steps (0 when there is none).
+double subject_size(const LoadedPlan& plan) {
+  Eigen::AlignedBox3d box;
+  for (const PlanStep& step : plan.plan.steps) {
+    const SystemPose pose(plan.scene.system, step.q);
+    for (int e = 0; e < plan.scene.system.num_entities(); ++e)
+      if (plan.scene.system.entity(e).kind != EntityKind::Environment)
+        for (const Eigen::Isometry3d& T_WL : pose.data(e).T_WL) box.extend(T_WL.translation());
+  }
+  return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
+// The overlay sizes of RenderStyle are in metres for a humanoid; a smaller subject (a hand, under
+// 1 m across) gets them scaled down in proportion, so that arrows and markers do not hide it.
+RenderStyle scaled_to_subject(RenderStyle style, double size) {
+  const double s = size > 0.0 ? std::clamp(size / 1.0, 0.05, 1.0) : 1.0;
+  style.force_max_length *= s;
+  style.force_radius *= s;
+  style.contact_ring_width *= s;
+  style.cone_height *= s;
+  style.com_radius *= s;
+  style.grid_spacing *= s;
+  return style;
+}
+
 RenderStyle with_plan_scale(RenderStyle style, const LoadedPlan& plan) {
+  style = scaled_to_subject(style, subject_size(plan));
   if (style.force_scale <= 0.0) style.force_scale = plan_force_scale(plan, style.force_max_length);
   style.friction = plan.friction;
   return style;

@@ -359,11 +359,12 @@ class ScenarioReader {
     if (!node) return;
     expect_keys(node, "search", {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
                                  "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
-                                 "max_retries", "contact_pairs", "last_contacts"});
+                                 "max_retries", "contact_pairs", "last_contacts", "min_contacts"});
     if (node["contact_pairs"]) read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"]) read_patterns(node["last_contacts"], "search.last_contacts", &s.search.last_contacts);
     if (node["contact_reach"]) s.search.contact_reach = positive(node["contact_reach"], "search.contact_reach");
     if (node["self_contacts"]) s.search.self_contacts = boolean(node["self_contacts"], "search.self_contacts");
+    if (node["min_contacts"]) s.search.min_contacts = integer(node["min_contacts"], "search.min_contacts", 1);
     if (node["placement_tolerance"]) s.search.placement_tolerance = positive(node["placement_tolerance"], "search.placement_tolerance");
     if (node["orientation_tolerance"]) s.search.orientation_tolerance = positive(node["orientation_tolerance"], "search.orientation_tolerance");
     if (node["stance_weight"]) s.search.stance_weight = number(node["stance_weight"], "search.stance_weight");

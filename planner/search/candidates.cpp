@@ -33,17 +33,17 @@ double point_polygon_distance(const Eigen::Vector3d& p, const std::vector<Eigen:
   return d;
 }
 
-// A floating body with mass must keep at least one contact on it.
-bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int removed) {
+// A floating body with mass must keep at least one contact on it (SearchOptions::min_contacts).
+bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int removed, int min_contacts) {
   const Contact& c = stance.contacts()[removed];
   for (SurfaceRef r : {c.s1, c.s2}) {
     const Entity& e = scene.system.entity(r.entity);
     if (!e.floating() || e.model->total_mass <= 0.0) continue;
-    bool other = false;
+    int others = 0;
     for (int i = 0; i < stance.size(); ++i)
       if (i != removed && (stance.contacts()[i].s1.entity == r.entity || stance.contacts()[i].s2.entity == r.entity))
-        other = true;
-    if (!other) return true;
+        ++others;
+    if (others < std::max(1, min_contacts)) return true;
   }
   return false;
 }
@@ -100,7 +100,7 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
   // Adj-: remove one contact (case 2).
   for (int i = 0; i < stance.size(); ++i) {
     const Contact& c = stance.contacts()[i];
-    if (c.fixed || leaves_a_body_unsupported(scene, stance, i)) continue;
+    if (c.fixed || leaves_a_body_unsupported(scene, stance, i, options.min_contacts)) continue;
     out.push_back({false, c});
   }
   // Adj+: one candidate per pair of surfaces (case 1).

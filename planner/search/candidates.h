@@ -9,6 +9,7 @@
 //  - a surface already in the stance as s1, or s2 already the s1 of a contact (stance rule);
 //  - removing the last contact that supports a floating body with mass: no equilibrium is
 //    possible without support (exact), and fixed contacts are never removed (METHOD.md);
+//  - removing a contact that leaves such a body fewer than SearchOptions::min_contacts (option);
 //  - two surfaces of one entity unless SearchOptions::self_contacts (option);
 //  - surfaces farther apart than SearchOptions::contact_reach at the node's configuration: one
 //    transition moves a link by a bounded amount (option);

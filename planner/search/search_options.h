@@ -16,6 +16,10 @@ struct SearchOptions {
   // contacts between two surfaces of one entity only when self_contacts is true.
   double contact_reach = 0.45;
   bool self_contacts = false;
+  // A contact is not removed when a floating body with mass would keep fewer contacts than this:
+  // 1 is exact (no equilibrium without support); more is an option (a hand that keeps three
+  // fingertips on a ball).
+  int min_contacts = 1;
   // When not empty, only these surface pairs are offered as new contacts: ("s1 id", "s2 id"),
   // each a pattern where * matches any run of characters ("robot/*_sole", "env/floor").
   std::vector<std::pair<std::string, std::string>> contact_pairs;

@@ -51,5 +51,27 @@ TEST(Candidates, PruningRulesAndOptions) {
   EXPECT_FALSE(offers(enumerate_candidates(scene, data, Stance({left}), goal, options), scene, "robot/r_palm", true));
 }
 
+TEST(Candidates, MinContactsKeepsThatManyContactsOnAFloatingBody) {
+  const Scene scene = test::humanoid_scene("wall");
+  const auto data = system_kinematics(scene.system, test::standing_configuration(scene));
+  const Contact left = test::task(scene, "robot/l_sole", "env/floor").contact;
+  const Contact right = test::task(scene, "robot/r_sole", "env/floor").contact;
+  const Contact palm = test::task(scene, "robot/r_palm", "env/wall").contact;
+  const Stance three({left, right, palm}), two({left, right});
+  SearchOptions options;
+  options.contact_reach = 2.0;
+  // Default (1): any of two or three contacts may go.
+  EXPECT_TRUE(offers(enumerate_candidates(scene, data, two, three, options), scene, "robot/l_sole", false));
+  EXPECT_TRUE(offers(enumerate_candidates(scene, data, three, three, options), scene, "robot/r_palm", false));
+  // 2: from two contacts none is removed, from three any one may be; adding is unaffected.
+  options.min_contacts = 2;
+  const auto from_two = enumerate_candidates(scene, data, two, three, options);
+  EXPECT_FALSE(offers(from_two, scene, "robot/l_sole", false));
+  EXPECT_FALSE(offers(from_two, scene, "robot/r_sole", false));
+  EXPECT_TRUE(offers(from_two, scene, "robot/r_palm", true));
+  const auto from_three = enumerate_candidates(scene, data, three, three, options);
+  for (const char* s1 : {"robot/l_sole", "robot/r_sole", "robot/r_palm"}) EXPECT_TRUE(offers(from_three, scene, s1, false)) << s1;
+}
+
 }  // namespace
 }  // namespace stanceplan
