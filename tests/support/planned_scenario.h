@@ -1,0 +1,39 @@
+#pragma once
+// Helpers for tests of whole scenarios: certify a plan through its file, name the contacts of a
+// stance. (CTest runs every test case in its own process, so each scenario is planned by one case.)
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "planner/certify/certify.h"
+#include "planner/io/plan_reader.h"
+#include "planner/io/plan_writer.h"
+#include "planner/search/stance_search.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan::test {
+
+// Certifies a plan through its file, as `stanceplan certify` would, and reports every failed check.
+inline void expect_certified(const Scenario& scenario, const SearchResult& result,
+                             const std::string& name) {
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  const std::string path = (temp_dir("scenarios") / (name + ".json")).string();
+  write_plan(result.plan, scenario, path);
+  const CertifyReport report = certify(read_plan(path));
+  for (const CheckResult& c : report.checks)
+    EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": "
+                            << c.detail;
+  EXPECT_TRUE(report.passed());
+}
+
+// The contacts of a stance as "s1 id-s2 id" strings, e.g. "cyl/bottom-env/platform_a".
+inline std::set<std::string> stance_ids(const Scenario& scenario, const Stance& stance) {
+  std::set<std::string> ids;
+  const Scene& scene = scenario.scene;
+  for (const Contact& c : stance.contacts())
+    ids.insert(scene.surfaces.id(scene.system, c.s1) + "-" + scene.surfaces.id(scene.system, c.s2));
+  return ids;
+}
+
+}  // namespace stanceplan::test
