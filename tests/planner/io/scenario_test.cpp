@@ -126,6 +126,16 @@ TEST_F(ScenarioFaults, WrongKindsAndNumbersAreNamed) {
             path_ + ":21: physics.friction: expected a number > 0, found -1");
 }
 
+TEST_F(ScenarioFaults, MinContactsIsAWholeNumberOfAtLeastOne) {
+  write(header() + stances() + "search:\n  min_contacts: 3\n");
+  EXPECT_EQ(load_scenario(path_).search.min_contacts, 3);
+  EXPECT_EQ(SearchOptions{}.min_contacts, 1);
+  EXPECT_EQ(error_of(header() + stances() + "search:\n  min_contacts: 0\n"),
+            path_ + ":21: search.min_contacts: expected a whole number >= 1, found 0");
+  EXPECT_EQ(error_of(header() + stances() + "search:\n  min_contacts: 2.5\n"),
+            path_ + ":21: search.min_contacts: expected a whole number >= 1, found 2.5");
+}
+
 TEST_F(ScenarioFaults, MissingSectionsAndFiles) {
   EXPECT_EQ(error_of(header()), path_ + ":1: stances: missing");
   std::string text = header() + stances();
