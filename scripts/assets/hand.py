@@ -379,8 +379,12 @@ def checks(hand, hand_sur, ball, pen):
     # The half turn about x maps the icosahedron onto itself.
     verts = {tuple(round(c, 12) for c in v) for s in faces for v in s["vertices"]}
     assert len(verts) == 12 and all(tuple(round(c, 12) for c in half_turn_x(v)) in verts for v in verts)
-    side = PEN["circumradius"]
-    lines.append(f"pen: hexagonal prism, side faces {PEN['length']} x {side} m; fingertip pad {HAND['pad_surface']} m square")
+    side_face = next(s for s in pen["surfaces"] if s["name"] == PEN_SIDES[1])["vertices"]
+    width = min(math.dist(side_face[i], side_face[(i + 1) % 4]) for i in range(4))
+    margin = (width - HAND["pad_surface"]) / 2
+    assert margin > 0.002, "a fingertip pad must fit across a side face of the pen"
+    lines.append(f"pen: hexagonal prism, side faces {PEN['length']} x {width:.3f} m; a fingertip pad "
+                 f"({HAND['pad_surface']} m square) fits across one with {margin * 1000:.1f} mm on each side")
     return lines
 
 
