@@ -28,6 +28,9 @@ uniform float u_shadow_bias;   // a few millimetres in light depth units
 // real time on llvmpipe, where every pixel of the floor runs this.
 float key_visibility(float n_dot_l) {
   vec3 c = v_light_clip.xyz / v_light_clip.w * 0.5 + 0.5;
+  // Outside the map (fitted to the subject and its shadow) nothing is known: lit. Sampling the
+  // clamped edge instead would smear an edge texel's shadow into an endless band on the floor.
+  if (any(lessThan(c.xy, vec2(0.0))) || any(greaterThan(c.xy, vec2(1.0)))) return 1.0;
   float bias = u_shadow_bias * (1.0 + 2.0 * sqrt(1.0 - n_dot_l * n_dot_l) / max(n_dot_l, 0.2));
   return texture(u_shadow_map, vec3(c.xy, min(c.z - bias, 1.0)));
 }
