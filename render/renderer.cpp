@@ -42,7 +42,8 @@ double ground_radius(const Eigen::AlignedBox3d& focus) {
 // What the shadow map covers: the subject and every other item standing on the visible ground
 // near it (a desk, a chair), so that their shadows are whole rather than cut at the map's edge.
 // The floor itself (nothing above the ground) casts no shadow on the ground.
-Eigen::AlignedBox3d shadow_focus(const DrawList& list, const Eigen::AlignedBox3d& focus, double ground_z) {
+Eigen::AlignedBox3d shadow_focus(const DrawList& list, const Eigen::AlignedBox3d& focus,
+                                 double ground_z) {
   Eigen::AlignedBox3d near = focus;
   const double reach = 0.5 * ground_radius(focus);
   for (const DrawItem& item : list.items) {
@@ -222,8 +223,8 @@ Eigen::Matrix4d Renderer::Impl::shadow_pass(const DrawList& list,
                                             const Lights& lights, const Eigen::AlignedBox3d& focus,
                                             std::vector<std::unique_ptr<GpuMesh>>& frame_meshes,
                                             double* depth_range) {
-  const ShadowFrustum frustum =
-      shadow_frustum(lights, shadow_focus(list, focus, style.ground_z), list.bounds(true), style.ground_z);
+  const ShadowFrustum frustum = shadow_frustum(lights, shadow_focus(list, focus, style.ground_z),
+                                               list.bounds(true), style.ground_z);
   *depth_range = frustum.depth_range;
   const Eigen::Matrix4d& light_matrix = frustum.light_matrix;
   if (!style.shadows) return light_matrix;
