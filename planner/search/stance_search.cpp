@@ -65,6 +65,12 @@ Eigen::VectorXd perturbed(const System& system, const Eigen::VectorXd& q, int no
   return out;
 }
 
+// Removing the contact that made a node gives back its parent's stance at the parent's placements,
+// which loop avoidance would reject after the solve: not worth a solver call.
+bool undoes_last_step(const SearchNode& node, const Candidate& c) {
+  return !c.add && node.step.action == "add" && node.step.changed && node.step.changed->same_surfaces(c.contact);
+}
+
 }  // namespace
 
 StanceSearch::StanceSearch(const Scenario& scenario, SearchOptions options)
@@ -292,7 +298,7 @@ SearchResult StanceSearch::run() {
       if (!publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
       const auto data = system_kinematics(system, tree[n].q());
       for (const Candidate& c : enumerate_candidates(scene, data, tree[n].stance(), goal, options_for_milestone(t)))
-        batch.push_back({n, c, 0});
+        if (!undoes_last_step(tree[n], c)) batch.push_back({n, c, 0});
     } else if (!retries.empty()) {
       // Backtracking (METHOD.md section 3): the queue is empty, so retry earlier failures from
       // other initial guesses.

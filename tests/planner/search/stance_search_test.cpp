@@ -83,6 +83,25 @@ TEST_F(Walk, FeetAlternateAndTheRobotReachesTheGoal) {
   EXPECT_NEAR(mean_x, 1.5, 0.05);
 }
 
+TEST(Search, NoCandidateUndoesTheStepThatMadeItsNode) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  SearchOptions options = scenario.search;
+  options.threads = 1;
+  StanceSearch search(scenario, options);
+  std::vector<SearchEvent> removals;
+  search.set_observer([&](const SearchEvent& e) {
+    if (e.kind == SearchEventKind::Candidate && e.candidate_case == CandidateCase::Remove) removals.push_back(e);
+  });
+  const SearchResult result = search.run();
+  ASSERT_EQ(result.status, PlanStatus::Found);
+  ASSERT_FALSE(removals.empty());
+  for (const SearchEvent& e : removals) {
+    const PlanStep& made_by = result.tree.at(size_t(e.parent)).step;
+    EXPECT_FALSE(made_by.action == "add" && made_by.changed->same_surfaces(e.changed))
+        << "event " << e.number << " removes the contact that node " << e.parent << " was made by adding";
+  }
+}
+
 TEST_F(Walk, SamePlanBitForBitForOneAndTwoThreadsAndTwoRuns) {
   ASSERT_EQ(result_->status, PlanStatus::Found);
   SearchOptions options = scenario_->search;
