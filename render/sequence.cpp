@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "render/annotations.h"
 #include "render/scene_assembly.h"
@@ -116,6 +117,57 @@ std::vector<int> key_steps(int num_steps, int max_panels) {
   return steps;
 }
 
+std::vector<int> key_steps(int num_steps, int max_panels, std::vector<int> must) {
+  if (must.empty() || num_steps <= max_panels || max_panels < 2)
+    return key_steps(num_steps, max_panels);
+  must.push_back(0);
+  must.push_back(num_steps - 1);
+  std::erase_if(must, [&](int i) { return i < 0 || i >= num_steps; });
+  std::sort(must.begin(), must.end());
+  must.erase(std::unique(must.begin(), must.end()), must.end());
+  const int m = static_cast<int>(must.size());
+  if (m >= max_panels) {
+    std::vector<int> steps;
+    for (int i : key_steps(m, max_panels)) steps.push_back(must[static_cast<size_t>(i)]);
+    return steps;
+  }
+  // One spare panel at a time to the gap whose sub-intervals would stay the longest.
+  std::vector<int> extra(static_cast<size_t>(m - 1), 0);
+  for (int spare = max_panels - m; spare > 0; --spare) {
+    int best = -1;
+    double longest = 0.0;
+    for (int g = 0; g + 1 < m; ++g) {
+      const int length = must[g + 1] - must[g];
+      if (extra[g] + 1 >= length) continue;  // every step of the gap is shown already
+      const double spacing = static_cast<double>(length) / (extra[g] + 1);
+      if (spacing > longest) longest = spacing, best = g;
+    }
+    if (best < 0) break;
+    ++extra[best];
+  }
+  std::vector<int> steps;
+  for (int g = 0; g < m; ++g) {
+    steps.push_back(must[g]);
+    if (g + 1 == m) break;
+    const double length = must[g + 1] - must[g];
+    for (int j = 1; j <= extra[g]; ++j)
+      steps.push_back(must[g] + static_cast<int>(std::lround(j * length / (extra[g] + 1))));
+  }
+  return steps;
+}
+
+std::vector<int> first_contact_steps(const Plan& plan) {
+  std::vector<int> steps;
+  std::set<SurfaceRef> used;
+  for (size_t i = 0; i < plan.steps.size(); ++i) {
+    const PlanStep& step = plan.steps[i];
+    if (i > 0 && step.action == "add" && step.changed && !used.contains(step.changed->s1))
+      steps.push_back(static_cast<int>(i));
+    for (const Contact& c : step.stance.contacts()) used.insert(c.s1);
+  }
+  return steps;
+}
+
 Image render_strip(const LoadedPlan& plan, StripOptions strip, const SequenceOptions& options,
                    std::shared_ptr<MeshLibrary> meshes, std::vector<std::string>* warnings) {
   if (!meshes) meshes = std::make_shared<MeshLibrary>();
@@ -136,7 +188,8 @@ Image render_strip(const LoadedPlan& plan, StripOptions strip, const SequenceOpt
   panel.style.legend = false;
   SequenceRenderer renderer(plan, panel, meshes);
 
-  const std::vector<int> steps = key_steps(renderer.num_steps(), strip.max_panels);
+  const std::vector<int> steps =
+      key_steps(renderer.num_steps(), strip.max_panels, first_contact_steps(plan.plan));
   // As few rows as the width allows, then rows filled evenly (8 panels in 4 + 4, not 5 + 3).
   const int count = static_cast<int>(steps.size());
   const int rows = std::max(1, (count + std::max(1, max_columns) - 1) / std::max(1, max_columns));

@@ -62,6 +62,12 @@ struct StripOptions {
 
 // Steps shown by a strip of at most max_panels panels: all of them, or evenly spaced ones.
 std::vector<int> key_steps(int num_steps, int max_panels);
+// The same, always showing the steps in `must` (thinned evenly if there are too many), the other
+// panels spread over the gaps between them in proportion to their length.
+std::vector<int> key_steps(int num_steps, int max_panels, std::vector<int> must);
+// Steps that make a contact with a surface (s1) no earlier stance used: the moments a figure must
+// show (the first thigh on the seat, the hand-over to the second arm).
+std::vector<int> first_contact_steps(const Plan& plan);
 
 // The figure: a title, the key postures in rows (same framing), each with its step label, and a
 // legend. `options.width/height` are ignored (panels have their own size).

@@ -247,6 +247,32 @@ TEST(Figures, KeyStepsKeepFirstAndLastAndSpreadEvenly) {
   EXPECT_EQ(steps.back(), 99);
 }
 
+TEST(Figures, KeyStepsShowEveryFirstContactAndSpreadTheRest) {
+  // humanoid_sit_desk: 39 steps, the thighs land at 33 and 35, the forearms at 37 and 38.
+  EXPECT_EQ(key_steps(39, 8, {33, 35, 37, 38}), (std::vector<int>{0, 8, 17, 25, 33, 35, 37, 38}));
+  EXPECT_EQ(key_steps(21, 5, {}), key_steps(21, 5));
+  // Too many: thinned evenly, first and last kept.
+  EXPECT_EQ(key_steps(30, 4, {3, 6, 9, 12, 15, 18}), (std::vector<int>{0, 6, 15, 29}));
+  // A gap is never given more panels than it has steps.
+  EXPECT_EQ(key_steps(12, 6, {1, 2}), (std::vector<int>{0, 1, 2, 5, 8, 11}));
+}
+
+TEST(Figures, FirstContactStepsAreTheFirstUseOfASurface) {
+  const SurfaceRef foot_l{0, 0}, foot_r{0, 1}, hand{0, 2}, floor{1, 0}, wall{1, 1};
+  auto step = [](std::vector<Contact> contacts, std::string action, std::optional<Contact> changed) {
+    PlanStep s;
+    s.stance = Stance(std::move(contacts));
+    s.action = std::move(action);
+    s.changed = changed;
+    return s;
+  };
+  const Contact l{foot_l, floor}, r{foot_r, floor}, h{hand, wall};
+  Plan plan;
+  plan.steps = {step({l, r}, "initial", std::nullopt), step({l}, "remove", r), step({l, r}, "add", r),
+                step({l, r, h}, "add", h), step({l, r}, "remove", h), step({l, r, h}, "add", h)};
+  EXPECT_EQ(first_contact_steps(plan), (std::vector<int>{3}));  // the hand, the first time only
+}
+
 TEST(Figures, ConvexHullIsCounterClockwiseWithoutInnerPoints) {
   const std::vector<Eigen::Vector2d> hull =
       convex_hull_2d({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}, {0.5, 0}, {1, 1}});
