@@ -6,6 +6,8 @@
 
 #include "app/certify_command.h"
 #include "app/inspect_command.h"
+#include "app/live/data_dir.h"
+#include "app/live/main_job.h"
 #include "app/plan_command.h"
 #include "app/posture_command.h"
 #include "app/render_command.h"
@@ -51,6 +53,25 @@ void add_plan(CLI::App& cli, PlanOptions& options) {
   cmd->add_option("--max-nodes", options.max_nodes, "expanded nodes before giving up (default: the scenario's)")
       ->check(CLI::Range(1, 100000000));
   cmd->add_flag("--verbose", options.verbose, "print every search event on stderr");
+  cmd->add_option("--snapshots", options.snapshots,
+                  "draw every search event into DIR (event_NNNNN_KIND.png, events.jsonl) off the search "
+                  "thread, then the plan's steps (DIR/steps/) and strip (DIR/strip.png)");
+  cmd->add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
+                "with --snapshots: list rejected candidates in events.jsonl without drawing them");
+  cmd->add_flag("--stats", options.stats, "print timings: search, solves, snapshots, total");
+}
+
+// The main job: `stanceplan [SCENARIO.yaml]` with no sub-command (app/live/main_job.h).
+void add_main_job(CLI::App& cli, MainJobOptions& options) {
+  cli.add_option("scenario", options.scenario,
+                 std::string("scenario file for the main job (default: ") + kDefaultScenario +
+                     " from the installed or source data folder)");
+  cli.add_flag("--headless", options.headless, "main job: no window even when a display exists");
+  cli.add_option("--out", options.out_dir, "main job: output folder (default: ./stanceplan-out)");
+  cli.add_option("--threads", options.threads, "main job: candidate solves in parallel (default: the number of cores)")
+      ->check(CLI::Range(1, 256));
+  cli.add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
+               "main job: list rejected candidates without drawing them");
 }
 
 }  // namespace
@@ -58,7 +79,9 @@ void add_plan(CLI::App& cli, PlanOptions& options) {
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App cli{"stanceplan: multi-contact stance planning (Bouyarmane & Kheddar 2012).\n"
                "Exit codes: 0 success, 1 bad input or usage, 2 no plan found / check failed."};
-  cli.require_subcommand(1);
+  cli.require_subcommand(0, 1);
+  MainJobOptions main_job;
+  add_main_job(cli, main_job);
   InspectOptions inspect;
   add_inspect(cli, inspect);
   PostureOptions posture;
@@ -87,6 +110,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("plan")) return run_plan(plan, out, err);
     if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
     if (cli.got_subcommand("render")) return run_render(render_options, out, err);
+    return run_main_job(main_job, out, err);
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;

@@ -4,6 +4,10 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
 
 #include <cstdio>
 #include <iomanip>
@@ -12,6 +16,9 @@
 #include <sstream>
 
 #include "app/cli.h"
+#include "app/live/plan_session.h"
+#include "app/live/snapshot_writer.h"
+#include "app/render_command.h"
 #include "planner/io/plan_writer.h"
 #include "planner/search/stance_search.h"
 
@@ -20,17 +27,17 @@ namespace {
 
 // SIGINT / SIGTERM cancel the running search (its cancel flag is an atomic store, which is
 // async-signal-safe); the search then stops before its next solver iteration.
-std::atomic<StanceSearch*> g_running{nullptr};
+std::atomic<PlanSession*> g_running{nullptr};
 
 extern "C" void cancel_running_search(int) {
-  if (StanceSearch* search = g_running.load()) search->cancel();
+  if (PlanSession* session = g_running.load()) session->cancel_search();
 }
 
 // Installs the handlers for the lifetime of one search, restoring the previous ones after.
 class CancelOnSignal {
  public:
-  explicit CancelOnSignal(StanceSearch& search) {
-    g_running = &search;
+  explicit CancelOnSignal(PlanSession& session) {
+    g_running = &session;
     struct sigaction action {};
     action.sa_handler = cancel_running_search;
     sigemptyset(&action.sa_mask);
@@ -54,19 +61,58 @@ std::string describe(const Scene& scene, const Stance& stance) {
   return out + "}";
 }
 
+// Takes the session's events on the calling thread, in order, until the search ends; `report`
+// prints each (the search thread never waits for the terminal).
+void follow(const PlanSession& session, const std::function<void(const SearchEvent&)>& report) {
+  constexpr std::chrono::milliseconds kPoll{100};
+  for (size_t i = 0;;) {
+    if (session.wait_for_event(i, kPoll))
+      report(session.event(i++));
+    else if (session.finished())
+      return;
+  }
+}
+
+// The plan's steps as DIR/steps/step_NNN.png and DIR/strip.png, as `stanceplan render` draws them.
+void render_final_sequence(const std::string& plan_file, const std::string& dir, std::ostream& out, std::ostream& err) {
+  RenderOptions render;
+  render.plan = plan_file;
+  render.out_dir = (std::filesystem::path(dir) / "steps").string();
+  render.strip = (std::filesystem::path(dir) / "strip.png").string();
+  run_render(render, out, err);
+}
+
+void print_search_stats(const SearchResult& result, size_t events, std::ostream& out) {
+  out << "stats: search " << std::fixed << std::setprecision(3) << result.wall_time_s << " s wall, "
+      << result.solver_time_s << " s in solves, " << result.nodes_expanded << " nodes expanded, "
+      << result.solver_calls << " solver calls, " << result.plan.stats.threads << " solver processes, " << events
+      << " events\n";
+}
+
+void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::ostream& out) {
+  out << "stats: snapshots " << s.images << " images for " << s.events << " events in " << dir << ", " << std::fixed
+      << std::setprecision(1) << s.image_ms_median << " ms median per image (render + PNG), " << s.backlog_at_search_end
+      << " left when the search ended, drawn in " << std::setprecision(2) << s.drain_s << " s after it\n";
+}
+
 }  // namespace
 
 int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
+  const auto started = std::chrono::steady_clock::now();
   const Scenario scenario = load_scenario(options.scenario);
   SearchOptions search = scenario.search;
   if (options.threads) search.threads = *options.threads;
   if (options.time_limit) search.time_limit_s = *options.time_limit;
   if (options.max_nodes) search.max_nodes = *options.max_nodes;
-  StanceSearch planner(scenario, search);
+  PlanSession session(scenario, search);
+  std::optional<SnapshotWriter> snapshots;
+  if (!options.snapshots.empty()) snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});
   const bool live = isatty(STDERR_FILENO) && &err == &std::cerr;
   const int milestones = static_cast<int>(scenario.milestones.size());
-  int solver_calls = 0, max_depth = 0;
-  planner.set_observer([&](const SearchEvent& e) {
+  int solver_calls = 0;
+  size_t events = 0;
+  auto report = [&](const SearchEvent& e) {
+    ++events;
     if (e.kind == SearchEventKind::Candidate) ++solver_calls;
     if (options.verbose) {
       err << "[" << e.number << "] " << to_string(e.kind) << " node " << e.node << " " << describe(scenario.scene, e.stance);
@@ -76,17 +122,35 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
             << std::setprecision(1) << e.time_ms << " ms)";
       err << "\n";
     } else if (live) {
-      (void)max_depth;
       err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones << "  solver calls "
           << solver_calls << "   " << std::flush;
     }
-  });
-  const SearchResult result = [&] {
-    CancelOnSignal on_signal(planner);
-    return planner.run();
-  }();
+  };
+  {
+    CancelOnSignal on_signal(session);
+    session.start();
+    if (snapshots) snapshots->start();
+    follow(session, report);
+  }
   if (live && !options.verbose) err << "\n";
-  if (result.status != PlanStatus::Found) {
+  if (const std::exception_ptr error = session.error()) std::rethrow_exception(error);
+  const SearchResult result = *session.result();
+  if (options.stats) print_search_stats(result, events, out);
+  const bool found = result.status == PlanStatus::Found;
+  if (found) {
+    write_plan(result.plan, scenario, options.out);
+    out << "wrote " << options.out << ": " << result.plan.steps.size() << " steps, " << result.nodes_expanded
+        << " nodes expanded, " << result.solver_calls << " solver calls, " << std::fixed << std::setprecision(2)
+        << result.wall_time_s << " s\n";
+  }
+  if (snapshots) {  // the backlog, if the writer fell behind, is drawn now
+    const SnapshotStats stats = snapshots->finish();
+    out << "snapshots: " << stats.images << " images of " << stats.events << " search events in " << options.snapshots
+        << " (index " << SnapshotWriter::kIndexFile << ")\n";
+    if (options.stats) print_snapshot_stats(stats, options.snapshots, out);
+    if (found) render_final_sequence(options.out, options.snapshots, out, err);
+  }
+  if (!found) {
     err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message << "\n";
     if (result.closest_node >= 0)
       err << "  closest stance to the goal: " << describe(scenario.scene, result.tree[result.closest_node].stance()) << "\n";
@@ -95,10 +159,9 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
         << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
     return kExitFailed;
   }
-  write_plan(result.plan, scenario, options.out);
-  out << "wrote " << options.out << ": " << result.plan.steps.size() << " steps, " << result.nodes_expanded
-      << " nodes expanded, " << result.solver_calls << " solver calls, " << std::fixed << std::setprecision(2)
-      << result.wall_time_s << " s\n";
+  if (options.stats)
+    out << "stats: total " << std::fixed << std::setprecision(3)
+        << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() << " s\n";
   return kExitSuccess;
 }
 

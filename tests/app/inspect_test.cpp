@@ -78,7 +78,7 @@ TEST(Inspect, MissingFileExitsOneWithTheFileNamed) {
 }
 
 TEST(Inspect, UsageErrorsExitOne) {
-  EXPECT_EQ(run({}).code, 1);
+  EXPECT_EQ(run({"--no-such-option"}).code, 1);  // (no argument at all is the main job)
   EXPECT_EQ(run({"inspect"}).code, 1);
   const CliResult r = run({"inspect", test::panda_urdf(), "--kind", "wheeled"});
   EXPECT_EQ(r.code, 1);

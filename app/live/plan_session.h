@@ -1,0 +1,67 @@
+#pragma once
+// One stance search on a worker thread (ARCHITECTURE.md, Threads). Every SearchEvent is stored in
+// order in the session; consumers (the snapshot writer, the panel, the progress line) read them
+// with their own cursor and never block the search: the search only takes the session's mutex
+// long enough to append an event. The step gate is the one way to hold the search (pause / step).
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "planner/io/scenario.h"
+#include "planner/search/search_events.h"
+#include "planner/search/stance_search.h"
+
+namespace stanceplan::app {
+
+class PlanSession {
+ public:
+  PlanSession(const Scenario& scenario, SearchOptions options);  // scenario outlives the session
+  ~PlanSession();                                                // cancels and joins
+  PlanSession(const PlanSession&) = delete;
+  PlanSession& operator=(const PlanSession&) = delete;
+
+  void start();      // launches the worker thread (once)
+  StepGate& gate();  // pause / step / resume, used by the panel
+  void cancel();     // cancels search and gate; returns at once
+  // Async-signal-safe part of cancel(), for SIGINT handlers: one atomic store. A search held by a
+  // paused gate stays held; the command line never pauses it.
+  void cancel_search() { search_.cancel(); }
+  bool finished() const;
+  size_t event_count() const;
+  SearchEvent event(size_t index) const;  // copy, thread-safe
+  // Seconds from start() to the moment the event was published.
+  double event_time_s(size_t index) const;
+  // Blocks until event_count() > index or the session finished or timeout; true if available.
+  bool wait_for_event(size_t index, std::chrono::milliseconds timeout) const;
+  // Blocks until the session finished or timeout; true when finished.
+  bool wait_until_finished(std::chrono::milliseconds timeout) const;
+  std::optional<SearchResult> result() const;  // set once finished
+  // What ended the search thread when it threw (bad input met during the search): result() then
+  // stays empty. Null otherwise.
+  std::exception_ptr error() const;
+  const Scenario& scenario() const { return scenario_; }
+
+ private:
+  void record(const SearchEvent& event);
+  void run();
+
+  const Scenario& scenario_;
+  StanceSearch search_;
+  StepGate gate_;
+  std::thread worker_;
+  std::chrono::steady_clock::time_point start_time_;
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::vector<SearchEvent> events_;
+  std::vector<double> times_s_;
+  std::optional<SearchResult> result_;
+  std::exception_ptr error_;
+  bool finished_ = false;
+};
+
+}  // namespace stanceplan::app

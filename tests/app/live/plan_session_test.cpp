@@ -1,0 +1,104 @@
+// PlanSession: the search on a worker thread, its events stored in order for any number of
+// readers, the step gate driven the way the panel drives it, cancellation.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "app/live/plan_session.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan {
+namespace {
+
+using namespace std::chrono_literals;
+using app::PlanSession;
+
+// Long enough for the search to publish an event if the gate let it: a walk candidate solves in
+// tens of milliseconds.
+constexpr auto kQuiet = 300ms;
+constexpr auto kPatience = 60s;
+
+SearchOptions single_process(const Scenario& scenario) {
+  SearchOptions options = scenario.search;
+  options.threads = 1;
+  return options;
+}
+
+TEST(PlanSession, RunsTheWalkOnItsThreadAndKeepsEveryEventInOrder) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  PlanSession session(scenario, single_process(scenario));
+  EXPECT_FALSE(session.finished());
+  session.start();
+  // A reader with its own cursor, as the snapshot writer and the panel read.
+  size_t seen = 0;
+  while (session.wait_for_event(seen, kPatience)) {
+    EXPECT_EQ(session.event(seen).number, static_cast<int>(seen));
+    ++seen;
+  }
+  ASSERT_TRUE(session.wait_until_finished(kPatience));
+  ASSERT_TRUE(session.result().has_value());
+  EXPECT_EQ(session.result()->status, PlanStatus::Found);
+  EXPECT_EQ(seen, session.event_count());
+  EXPECT_EQ(session.event(seen - 1).kind, SearchEventKind::PlanFound);
+  EXPECT_FALSE(session.error());
+  for (size_t i = 1; i < seen; ++i) EXPECT_GE(session.event_time_s(i), session.event_time_s(i - 1));
+}
+
+// The panel's interface: while paused, no event happens; step(1) lets exactly one through.
+TEST(PlanSession, TheStepGateDrivesTheSearchOneEventAtATime) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  PlanSession session(scenario, single_process(scenario));
+  session.gate().pause();
+  session.start();
+  EXPECT_FALSE(session.wait_for_event(0, kQuiet)) << "paused before the first event";
+  EXPECT_EQ(session.event_count(), 0u);
+  EXPECT_TRUE(session.gate().paused());
+  for (size_t i = 0; i < 6; ++i) {
+    session.gate().step(1);
+    ASSERT_TRUE(session.wait_for_event(i, kPatience)) << "step " << i;
+    EXPECT_FALSE(session.wait_for_event(i + 1, kQuiet)) << "one event per step, at step " << i;
+    EXPECT_EQ(session.event_count(), i + 1);
+    EXPECT_EQ(session.event(i).number, static_cast<int>(i));
+    EXPECT_TRUE(session.gate().paused());
+    EXPECT_FALSE(session.finished());
+  }
+  session.gate().step(3);
+  ASSERT_TRUE(session.wait_for_event(8, kPatience));
+  EXPECT_FALSE(session.wait_for_event(9, kQuiet));
+  EXPECT_EQ(session.event_count(), 9u);
+  session.gate().resume();
+  ASSERT_TRUE(session.wait_until_finished(kPatience));
+  EXPECT_EQ(session.result()->status, PlanStatus::Found);
+  EXPECT_EQ(session.event(session.event_count() - 1).kind, SearchEventKind::PlanFound);
+}
+
+TEST(PlanSession, CancelReleasesAPausedSearch) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  PlanSession session(scenario, single_process(scenario));
+  session.gate().pause();
+  session.start();
+  session.gate().step(2);
+  ASSERT_TRUE(session.wait_for_event(1, kPatience));
+  session.cancel();
+  ASSERT_TRUE(session.wait_until_finished(kPatience));
+  ASSERT_TRUE(session.result().has_value());
+  EXPECT_EQ(session.result()->status, PlanStatus::Cancelled);
+  // The failure event is always delivered, even when cancelled, and is the last one.
+  EXPECT_EQ(session.event(session.event_count() - 1).kind, SearchEventKind::Failure);
+}
+
+TEST(PlanSession, DestroyingARunningSessionCancelsAndJoins) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  SearchOptions options = scenario.search;
+  options.threads = 2;  // with solver worker processes, forked from the session's thread
+  {
+    PlanSession session(scenario, options);
+    session.start();
+    ASSERT_TRUE(session.wait_for_event(2, kPatience));
+  }  // the destructor cancels and joins; the test ends instead of hanging
+  SUCCEED();
+}
+
+}  // namespace
+}  // namespace stanceplan
