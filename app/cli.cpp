@@ -12,6 +12,7 @@
 #include "app/posture_command.h"
 #include "app/render_command.h"
 #include "planner/util/input_error.h"
+#include "app/gui/panel_command.h"
 
 namespace stanceplan::app {
 namespace {
@@ -76,6 +77,11 @@ void add_main_job(CLI::App& cli, MainJobOptions& options) {
 
 }  // namespace
 
+  cli.add_option("--exit-after-frames", options.exit_after_frames,
+                 "main job with a display: close the panel after N frames (scripted runs)")
+      ->check(CLI::Range(1, 100000000));
+  cli.add_option("--screenshot", options.screenshot,
+                 "main job with a display: save the panel's window as PNG after its last frame");
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App cli{"stanceplan: multi-contact stance planning (Bouyarmane & Kheddar 2012).\n"
                "Exit codes: 0 success, 1 bad input or usage, 2 no plan found / check failed."};
@@ -94,6 +100,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   cli.add_subcommand("certify", "Re-check a plan from the plan file and the models alone (never the solver). "
                                 "Exit 2 when a check fails")
       ->add_option("plan", certify_plan, "plan file (stanceplan/plan@1 JSON)")
+  PanelOptions panel;
+  add_panel_subcommand(cli, panel);
       ->required();
   try {
     cli.parse(argc, argv);
@@ -114,6 +122,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;
+    if (cli.got_subcommand("panel")) return run_panel(panel, out, err);
   } catch (const std::runtime_error& e) {  // e.g. an output file that cannot be written
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;

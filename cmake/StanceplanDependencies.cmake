@@ -12,3 +12,5 @@ find_package(Qhull REQUIRED)          # libqhull-dev: convex hulls of collision 
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)  # also every gl* entry point: never link libGL
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)        # stb_truetype for captions (built into libstb)
 find_package(PNG REQUIRED)            # libpng at compression level 1 (stb_image_write is 3x slower)
+find_package(glfw3 3.3 REQUIRED)      # the panel's window (target `glfw`; it loads libGL itself with dlopen)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)    # Dear ImGui 1.86: static libimgui.a with the GLFW and OpenGL3 backends

@@ -1,0 +1,43 @@
+#pragma once
+// Everything the panel remembers between frames, as one plain struct: what the 3-D view shows,
+// the selection, the timeline, and requests raised by buttons for the frame loop to carry out.
+// The sections read and write it; they hold no state of their own.
+#include <string>
+#include <vector>
+
+namespace stanceplan::gui {
+
+// What the 3-D view and the inspector show.
+enum class ViewSource {
+  Latest,    // the newest event with a configuration (follows the search)
+  Node,      // the selected node (the candidate event that made it)
+  Event,     // one chosen event (a rejected candidate: the solver's final iterate)
+  PlanStep,  // a step of the plan found (the timeline)
+};
+
+struct PanelState {
+  ViewSource source = ViewSource::Latest;
+  int selected_node = -1;
+  long selected_event = -1;
+  int tree_focus = -1;        // the node the tree keeps in sight: the selection, or the newest
+  bool reveal_focus = false;  // the focus changed: open its ancestors and scroll to it
+
+  // Timeline over the plan found.
+  int plan_step = 0;
+  bool playing = false;
+  double play_time_s = 0.0;  // time spent on the current step while playing
+  float seconds_per_step = 1.0f;
+
+  float speed_limit = 0.0f;  // events per second while running; 0: none
+
+  // Raised by buttons, carried out (and cleared) by the frame loop.
+  bool export_view = false;
+  bool export_strip = false;
+  bool cancel_search = false;
+  bool reset_camera = false;
+  std::string export_folder = ".";
+
+  std::vector<std::string> messages;  // export results and warnings, newest last
+};
+
+}  // namespace stanceplan::gui

@@ -1,0 +1,16 @@
+#pragma once
+// The search tree as an expandable list: every node coloured by its status (ui_style.h), with
+// its change of contact; under each node the candidates tried from it and rejected. Clicking a
+// node or a rejected candidate selects it for the 3-D view and the inspector.
+#include "app/gui/panel_state.h"
+#include "app/gui/session_mirror.h"
+#include "planner/scene/scene.h"
+
+namespace stanceplan::gui {
+
+void draw_tree_section(const Scene& scene, const SessionMirror& mirror, PanelState& state);
+
+// Selects a node: the view and the inspector show it, and the tree opens down to it.
+void select_node(PanelState& state, int node);
+
+}  // namespace stanceplan::gui

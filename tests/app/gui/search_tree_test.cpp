@@ -1,0 +1,81 @@
+// SearchTree: the panel's tree rebuilt from events alone.
+#include "app/gui/search_tree.h"
+
+#include <gtest/gtest.h>
+
+namespace stanceplan::gui {
+namespace {
+
+SearchEvent candidate(int parent, int node, bool accepted) {
+  SearchEvent e;
+  e.kind = SearchEventKind::Candidate;
+  e.parent = parent;
+  e.node = accepted ? node : -1;
+  e.accepted = accepted;
+  e.status = accepted ? PostureStatus::Solved : PostureStatus::Infeasible;
+  return e;
+}
+
+SearchEvent of_kind(SearchEventKind kind, int node, int milestone = 0) {
+  SearchEvent e;
+  e.kind = kind;
+  e.node = node;
+  e.milestone = milestone;
+  return e;
+}
+
+// root 0 -> expanded: 1 accepted, one rejected, 2 accepted; 1 expanded -> 3 accepted, reaches
+// milestone 1; plan found at 3.
+std::vector<SearchEvent> story() {
+  return {candidate(-1, 0, true),
+          of_kind(SearchEventKind::Expansion, 0),
+          candidate(0, 1, true),
+          candidate(0, -1, false),
+          candidate(0, 2, true),
+          of_kind(SearchEventKind::Expansion, 1),
+          candidate(1, 3, true),
+          of_kind(SearchEventKind::Milestone, 3, 1),
+          of_kind(SearchEventKind::PlanFound, 3)};
+}
+
+TEST(SearchTree, RebuildsNodesChildrenAndRejectedCandidates) {
+  SearchTree tree;
+  const auto events = story();
+  for (size_t i = 0; i < events.size(); ++i) tree.add(events[i], i);
+  ASSERT_EQ(tree.nodes().size(), 4u);
+  EXPECT_EQ(tree.node(0)->children, (std::vector<int>{1, 2}));
+  EXPECT_EQ(tree.node(0)->rejected, (std::vector<size_t>{3}));
+  EXPECT_EQ(tree.node(3)->parent, 1);
+  EXPECT_EQ(tree.node(3)->depth, 2);
+  EXPECT_EQ(tree.node(3)->event, 6u);
+  EXPECT_EQ(tree.node(4), nullptr);
+  EXPECT_EQ(tree.node(-1), nullptr);
+}
+
+TEST(SearchTree, ColoursNodesByStatus) {
+  SearchTree tree;
+  const auto events = story();
+  for (size_t i = 0; i + 1 < events.size(); ++i) tree.add(events[i], i);  // before the plan
+  EXPECT_EQ(tree.status(0), NodeStatus::Expanded);
+  EXPECT_EQ(tree.status(2), NodeStatus::Open);
+  EXPECT_EQ(tree.status(3), NodeStatus::Milestone);
+  EXPECT_TRUE(tree.plan_path().empty());
+  tree.add(events.back(), events.size() - 1);
+  EXPECT_EQ(tree.goal(), 3);
+  EXPECT_EQ(tree.status(3), NodeStatus::Goal);
+  EXPECT_EQ(tree.status(1), NodeStatus::PlanPath);
+  EXPECT_EQ(tree.status(0), NodeStatus::PlanPath);
+  EXPECT_EQ(tree.status(2), NodeStatus::Open);
+  EXPECT_EQ(tree.plan_path(), (std::vector<int>{0, 1, 3}));
+}
+
+TEST(SearchTree, AFailureNamesTheClosestNode) {
+  SearchTree tree;
+  tree.add(candidate(-1, 0, true), 0);
+  tree.add(of_kind(SearchEventKind::Failure, 0), 1);
+  EXPECT_EQ(tree.closest(), 0);
+  EXPECT_EQ(tree.goal(), -1);
+}
+
+}  // namespace
+}  // namespace stanceplan::gui
