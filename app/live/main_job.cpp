@@ -33,7 +33,6 @@ int run_headless(const std::string& scenario, const MainJobOptions& options, std
   plan.threads = options.threads;
   plan.snapshots = dir;
   plan.snapshots_rejected = options.snapshots_rejected;
-  fs::create_directories(dir);
   if (const int code = run_plan(plan, out, err); code != kExitSuccess) {
     err << "stanceplan: the search snapshots and " << SnapshotWriter::kIndexFile << " are in "
         << dir << "\n";

@@ -41,7 +41,10 @@ TEST(MainJob, AMissingScenarioIsBadInput) {
   const test::CliResult r =
       test::run_cli({"/nonexistent/scenario.yaml", "--headless", "--out", out.string()});
   EXPECT_EQ(r.code, 1);
-  EXPECT_THAT(r.err, HasSubstr("stanceplan: error: /nonexistent/scenario.yaml"));
+  EXPECT_EQ(r.err,
+            "stanceplan: error: /nonexistent/scenario.yaml: cannot be read (no such file or no "
+            "permission)\n");
+  EXPECT_FALSE(fs::exists(out)) << "nothing is written for bad input";
 }
 
 #ifndef STANCEPLAN_HAVE_PANEL
