@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -242,6 +243,9 @@ SolverPool::Worker SolverPool::spawn() {
     close(down[1]);
     return {};
   }
+  // Output still buffered in this process would be copied into the worker and written again
+  // when the worker's Ipopt flushes stdout.
+  std::fflush(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {  // the worker: answer requests until the parent closes the pipe
     close(down[1]);

@@ -132,3 +132,26 @@ TEST(PlanCommand, SigintStopsTheSearchCleanly) {
 
 }  // namespace
 }  // namespace stanceplan
+
+namespace stanceplan {
+namespace {
+
+// Output written before the solver processes are forked appears once, not once per process,
+// when stdout is a file (fully buffered).
+TEST(PlanCommand, OutputBeforeTheWorkersForkIsWrittenOnce) {
+  const std::filesystem::path dir = test::temp_dir("fork_output");
+  const std::string command = std::string(STANCEPLAN_BINARY) + " " +
+                              test::source_path("scenarios/humanoid_walk.yaml") + " --headless --threads 2 --out " +
+                              (dir / "out").string() + " --no-rejected-snapshots > " + (dir / "stdout.txt").string() +
+                              " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(dir / "stdout.txt");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  size_t count = 0;
+  for (size_t at = text.find("stanceplan: planning"); at != std::string::npos; at = text.find("stanceplan: planning", at + 1))
+    ++count;
+  EXPECT_EQ(count, 1u) << text;
+}
+
+}  // namespace
+}  // namespace stanceplan
