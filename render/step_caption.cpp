@@ -8,8 +8,16 @@
 namespace stanceplan::render {
 namespace {
 
+// The surface's own name, or "entity/name" when another entity has a surface of that name (two
+// arms with a pad_l each).
 std::string surface_name(const Scene& scene, SurfaceRef ref) {
-  return scene.surfaces.get(ref).name;
+  const std::string& name = scene.surfaces.get(ref).name;
+  for (int e = 0; e < scene.surfaces.num_entities(); ++e) {
+    if (e == ref.entity) continue;
+    for (const Surface& other : scene.surfaces.of(e))
+      if (other.name == name) return scene.system.entity(ref.entity).name + "/" + name;
+  }
+  return name;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "render/gif_writer.h"
 #include "render/png_io.h"
 #include "render/sequence.h"
+#include "planner/io/scenario.h"
 #include "render/step_caption.h"
 #include "render/text.h"
 #include "tests/render/render_fixtures.h"
@@ -340,6 +341,15 @@ TEST(Figures, StepCaptionsNameStepActionAndStance) {
             "Step 0 of 2  \u00b7  initial stance\nstance: l_sole, r_sole on floor");
   EXPECT_EQ(step_caption(plan, 2).rfind("Step 2 of 2  \u00b7  add ", 0), 0u);
   EXPECT_EQ(plan_title(plan), "humanoid_stand");
+}
+
+TEST(Figures, CaptionsNameTheEntityWhenTwoHaveASurfaceOfThatName) {
+  // Two humanoids (r1, r2) with the same surface names, a table and the floor.
+  const Scenario scenario = load_scenario(test::source_path("scenarios/two_humanoids_table.yaml"));
+  const Scene& scene = scenario.scene;
+  const auto ref = [&](const char* id) { return *scene.surfaces.find(scene.system, id); };
+  const Stance stance({{ref("r1/l_sole"), ref("env/floor")}, {ref("r2/r_sole"), ref("env/floor")}});
+  EXPECT_EQ(stance_summary(scene, stance), "r1/l_sole, r2/r_sole on floor");
 }
 
 TEST(EdgeSmoothing, SoftensStaircasesAndKeepsFlatAreas) {
