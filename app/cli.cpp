@@ -73,15 +73,15 @@ void add_main_job(CLI::App& cli, MainJobOptions& options) {
       ->check(CLI::Range(1, 256));
   cli.add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
                "main job: list rejected candidates without drawing them");
-}
-
-}  // namespace
-
   cli.add_option("--exit-after-frames", options.exit_after_frames,
                  "main job with a display: close the panel after N frames (scripted runs)")
       ->check(CLI::Range(1, 100000000));
   cli.add_option("--screenshot", options.screenshot,
                  "main job with a display: save the panel's window as PNG after its last frame");
+}
+
+}  // namespace
+
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App cli{"stanceplan: multi-contact stance planning (Bouyarmane & Kheddar 2012).\n"
                "Exit codes: 0 success, 1 bad input or usage, 2 no plan found / check failed."};
@@ -96,12 +96,12 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_plan(cli, plan);
   RenderOptions render_options;
   add_render_subcommand(cli, render_options);
+  PanelOptions panel;
+  add_panel_subcommand(cli, panel);
   std::string certify_plan;
   cli.add_subcommand("certify", "Re-check a plan from the plan file and the models alone (never the solver). "
                                 "Exit 2 when a check fails")
       ->add_option("plan", certify_plan, "plan file (stanceplan/plan@1 JSON)")
-  PanelOptions panel;
-  add_panel_subcommand(cli, panel);
       ->required();
   try {
     cli.parse(argc, argv);
@@ -118,11 +118,11 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("plan")) return run_plan(plan, out, err);
     if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
     if (cli.got_subcommand("render")) return run_render(render_options, out, err);
+    if (cli.got_subcommand("panel")) return run_panel(panel, out, err);
     return run_main_job(main_job, out, err);
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;
-    if (cli.got_subcommand("panel")) return run_panel(panel, out, err);
   } catch (const std::runtime_error& e) {  // e.g. an output file that cannot be written
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;
