@@ -47,8 +47,15 @@ XvfbRun run_in_xvfb(const std::string& args, const fs::path& dir) {
   // -a finds a free display from -n on: starting each test process at its own number keeps
   // parallel test cases from racing for the same one.
   const std::string first_display = std::to_string(100 + getpid() % 5000);
-  const std::string command = xvfb + " -a -n " + first_display + " -s \"-screen 0 1280x720x24\" " +
-                              STANCEPLAN_BINARY + " " + args + " > " + log.string() + " 2>&1";
+  // Under AddressSanitizer (the CI's ASan pass) leak checking is off for the window process only:
+  // Mesa's GLX/DRI side keeps a few hundred bytes per process that it never frees, allocated in
+  // libraries GLFW has unloaded by exit, so no suppression can name them (measured: 592 bytes in 7
+  // objects, libOSMesa and unknown modules). Every other ASan check stays on, and the panel's
+  // classes are leak-checked in-process by the other tests of this folder.
+  const std::string asan = "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" ";
+  const std::string command = asan + xvfb + " -a -n " + first_display +
+                              " -s \"-screen 0 1280x720x24\" " + STANCEPLAN_BINARY + " " + args +
+                              " > " + log.string() + " 2>&1";
   const int status = std::system(command.c_str());
   XvfbRun run;
   run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
