@@ -12,6 +12,8 @@ int run_certify(const std::string& path, std::ostream& out, std::ostream& err) {
   const LoadedPlan plan = read_plan(path);
   const CertifyReport report = certify(plan);
   out << "certify " << path << ": " << plan.plan.steps.size() << " steps\n";
+  if (!plan.plan.partial.empty())
+    out << "partial plan (" << plan.plan.partial << "): every step is checked; the last stance is not the goal\n";
   out << std::left << std::setw(20) << "check" << std::right << std::setw(12) << "worst" << std::setw(12) << "tolerance"
       << "  unit     step  result  where\n";
   for (const CheckResult& c : report.checks) {

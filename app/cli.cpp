@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "app/certify_command.h"
+#include "app/cli_validators.h"
 #include "app/inspect_command.h"
 #include "app/live/data_dir.h"
 #include "app/live/main_job.h"
@@ -48,12 +49,15 @@ void add_plan(CLI::App& cli, PlanOptions& options) {
   cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")->required();
   cmd->add_option("--out", options.out, "plan file to write (default: plan.json)");
   cmd->add_option("--threads", options.threads, "candidate solves in parallel (default: the number of cores)")
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_in(1, 256));
   cmd->add_option("--time-limit", options.time_limit, "seconds before giving up (default: the scenario's)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
   cmd->add_option("--max-nodes", options.max_nodes, "expanded nodes before giving up (default: the scenario's)")
-      ->check(CLI::Range(1, 100000000));
+      ->check(whole_number_in(1, 100000000));
   cmd->add_flag("--verbose", options.verbose, "print every search event on stderr");
+  cmd->add_flag("--partial", options.partial,
+                "when no plan is found, write the steps to the stance closest to the goal as a plan marked "
+                "\"partial\" (the exit code stays 2)");
   cmd->add_option("--snapshots", options.snapshots,
                   "draw every search event into DIR (event_NNNNN_KIND.png, events.jsonl) off the search "
                   "thread, then the plan's steps (DIR/steps/) and strip (DIR/strip.png)");

@@ -20,6 +20,7 @@
 #include "app/live/snapshot_writer.h"
 #include "app/render_command.h"
 #include "planner/io/plan_writer.h"
+#include "planner/search/plan_path.h"
 #include "planner/search/stance_search.h"
 
 namespace stanceplan::app {
@@ -95,6 +96,20 @@ void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::o
       << " left when the search ended, drawn in " << std::setprecision(2) << s.drain_s << " s after it\n";
 }
 
+// --partial: the steps from the root to the node closest to the goal, marked partial in the file.
+void write_partial_plan(const SearchResult& result, const Scenario& scenario, const std::string& path, std::ostream& err) {
+  if (result.closest_node < 0) {
+    err << "  no partial plan: the search has no node (the initial stance was not realised)\n";
+    return;
+  }
+  Plan plan = plan_to_node(result.tree, result.closest_node);
+  plan.stats = result.plan.stats;
+  plan.partial = std::string(to_string(result.status)) + ": " + result.message;
+  write_plan(plan, scenario, path);
+  err << "stanceplan: wrote a PARTIAL plan to " << path << ": " << plan.steps.size()
+      << " steps from the initial stance to the closest stance; it does not reach the goal\n";
+}
+
 }  // namespace
 
 int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
@@ -157,6 +172,7 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
     err << "  goal stance: " << describe(scenario.scene, scenario.stance(scenario.goal_stance)) << "\n";
     err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls << " solver calls, "
         << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
+    if (options.partial) write_partial_plan(result, scenario, options.out, err);
     return kExitFailed;
   }
   if (options.stats)

@@ -15,6 +15,9 @@ struct PlanOptions {
   std::optional<double> time_limit;
   std::optional<int> max_nodes;
   bool verbose = false;
+  // When no plan is found: write the path from the initial stance to the stance closest to the
+  // goal as a plan marked partial ("partial" in the file, a line on `err`); the exit code stays 2.
+  bool partial = false;
   // Live snapshots (app/live/snapshot_writer.h): every search event as DIR/event_NNNNN_KIND.png
   // and DIR/events.jsonl, drawn off the search thread; then the plan's steps as DIR/steps/ and
   // DIR/strip.png. Empty: none.

@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -132,6 +134,11 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
   if (options.width < 16 || options.height < 16 || options.width > kMaxImageSide ||
       options.height > kMaxImageSide)
     throw InputError("--size: expected between 16 and 8192 pixels per side");
+  const auto finite = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+  };
+  if (!finite(options.eye) || !finite(options.target))
+    throw InputError("--eye and --target: expected finite coordinates");
   PlanReadOptions read_options;
   read_options.build_collision = false;
   const LoadedPlan plan = read_plan(options.plan, read_options);

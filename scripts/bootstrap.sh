@@ -11,6 +11,7 @@ packages=(
   libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
+  clang-14 libclang-rt-14-dev  # libFuzzer targets (fuzz/, scripts/run_fuzz.sh)
 )
 
 missing=()

@@ -7,6 +7,8 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <sstream>
+#include <string>
 
 #include "planner/util/input_error.h"
 
@@ -69,6 +71,13 @@ TriangleMesh load_mesh(const std::string& path, const Eigen::Vector3d& scale) {
   append_node(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), scale, &mesh);
   if (mesh.triangles.empty()) {
     throw InputError("mesh file \"" + path + "\" has no triangles");
+  }
+  // A NaN or infinite vertex (a corrupt file) would poison the hull and every distance after it.
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    if (mesh.vertices[i].allFinite()) continue;
+    std::ostringstream v;
+    v << mesh.vertices[i].x() << " " << mesh.vertices[i].y() << " " << mesh.vertices[i].z();
+    throw InputError("mesh file \"" + path + "\": vertex " + std::to_string(i) + " is not finite (" + v.str() + ")");
   }
   return mesh;
 }

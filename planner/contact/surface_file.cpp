@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -63,11 +64,14 @@ class SurfaceFileReader {
   }
 
   double read_number(const YAML::Node& node, const std::string& where) const {
+    double value = 0.0;
     try {
-      return node.as<double>();
+      value = node.as<double>();
     } catch (const YAML::Exception&) {
       fail(node, where, "expected a number" + (node.IsScalar() ? ", found \"" + node.Scalar() + "\"" : ""));
     }
+    if (!std::isfinite(value)) fail(node, where, "expected a finite number, found \"" + node.Scalar() + "\"");
+    return value;
   }
 
   Surface read_surface(const YAML::Node& node, const std::string& index_label) {
@@ -106,9 +110,16 @@ class SurfaceFileReader {
 
   Surface read_box_face(const YAML::Node& node, const std::string& where, const std::string& name,
                         int link) {
-    const std::string face = node["box_face"].as<std::string>();
-    const int box_index = node["box_index"] ? static_cast<int>(read_number(node["box_index"], where)) : 0;
-    const double inset = node["inset"] ? read_number(node["inset"], where) : 0.0;
+    if (!node["box_face"].IsScalar()) fail(node["box_face"], where, "box_face: expected one of +x -x +y -y +z -z");
+    const std::string face = node["box_face"].Scalar();
+    int box_index = 0;
+    if (node["box_index"]) {
+      const double index = read_number(node["box_index"], where + ": box_index");
+      if (index != std::floor(index) || index < 0 || index > 1e6)
+        fail(node["box_index"], where, "box_index: expected a whole number >= 0, found " + node["box_index"].Scalar());
+      box_index = static_cast<int>(index);
+    }
+    const double inset = node["inset"] ? read_number(node["inset"], where + ": inset") : 0.0;
     try {
       return surface_from_box_face(model_, link, box_index, face, inset, name);
     } catch (const InputError& e) {

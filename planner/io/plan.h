@@ -37,6 +37,10 @@ struct PlanStats {
 struct Plan {
   std::vector<PlanStep> steps;
   PlanStats stats;
+  // Empty for a plan that reaches the goal. Otherwise the plan is partial (`plan --partial`): its
+  // steps lead from the initial stance to the stance closest to the goal, and this says why the
+  // search stopped (e.g. "node_budget: no plan within 4 expanded nodes").
+  std::string partial;
 };
 
 }  // namespace stanceplan

@@ -25,9 +25,10 @@ class PlanReader {
     const json root = load();
     LoadedPlan out;
     out.file = path_;
-    if (!root.is_object()) fail("", "expected a JSON object");
+    object(root, "");
     if (string(root, "format", "") != "stanceplan/plan@1")
       fail("format", "expected \"stanceplan/plan@1\", found \"" + string(root, "format", "") + "\"");
+    if (root.contains("partial")) out.plan.partial = string(member(root, "partial", ""), "reason", "partial");
     out.scenario = root.contains("scenario") && root["scenario"].is_string() ? root["scenario"].get<std::string>() : "";
     out.spec.gravity = vector3(member(root, "gravity", ""), "gravity");
     out.friction = number(member(root, "friction", ""), "friction");
@@ -46,12 +47,13 @@ class PlanReader {
     if (!steps.is_array()) fail("steps", "expected an array");
     for (size_t i = 0; i < steps.size(); ++i)
       out.plan.steps.push_back(read_step(steps[i], "steps[" + std::to_string(i) + "]", out.scene));
-    if (root.contains("stats") && root["stats"].is_object()) {
+    if (root.contains("stats")) {
       const json& s = root["stats"];
-      out.plan.stats.nodes_expanded = s.value("nodes_expanded", 0);
-      out.plan.stats.solver_calls = s.value("solver_calls", 0);
-      out.plan.stats.wall_time_s = s.value("wall_time_s", 0.0);
-      out.plan.stats.threads = s.value("threads", 1);
+      object(s, "stats");
+      out.plan.stats.nodes_expanded = whole_number(s, "nodes_expanded", 0, "stats");
+      out.plan.stats.solver_calls = whole_number(s, "solver_calls", 0, "stats");
+      out.plan.stats.wall_time_s = optional_number(s, "wall_time_s", 0.0, "stats");
+      out.plan.stats.threads = whole_number(s, "threads", 1, "stats");
     }
     return out;
   }
@@ -64,7 +66,7 @@ class PlanReader {
     text << in.rdbuf();
     try {
       return json::parse(text.str());
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
       throw InputError(path_ + ": not valid JSON: " + e.what());
     }
   }
@@ -74,26 +76,54 @@ class PlanReader {
   }
 
   const json& member(const json& parent, const std::string& key, const std::string& field) const {
-    const std::string f = field.empty() ? key : field + "." + key;
-    if (!parent.is_object() || !parent.contains(key)) fail(f, "missing");
+    object(parent, field);
+    if (!parent.contains(key)) fail(field.empty() ? key : field + "." + key, "missing");
     return parent.at(key);
+  }
+
+  void object(const json& v, const std::string& field) const {
+    if (!v.is_object()) fail(field, "expected an object, found " + found(v));
+  }
+
+  static std::string found(const json& v) {
+    if (v.is_array()) return "an array of " + std::to_string(v.size());
+    return std::string(v.is_object() ? "an " : "a ") + v.type_name();
+  }
+
+  // Optional members (absent: the fallback); a member of the wrong type is an error, never ignored.
+  bool flag(const json& parent, const std::string& key, bool fallback, const std::string& field) const {
+    object(parent, field);
+    if (!parent.contains(key)) return fallback;
+    if (!parent[key].is_boolean()) fail(field + "." + key, "expected true or false, found " + found(parent[key]));
+    return parent[key].get<bool>();
+  }
+
+  double optional_number(const json& parent, const std::string& key, double fallback, const std::string& field) const {
+    return parent.contains(key) ? number(parent[key], field + "." + key) : fallback;
+  }
+
+  int whole_number(const json& parent, const std::string& key, int fallback, const std::string& field) const {
+    if (!parent.contains(key)) return fallback;
+    const double d = number(parent[key], field + "." + key);
+    if (d != std::floor(d) || d < 0 || d > 1e9) fail(field + "." + key, "expected a whole number >= 0, found " + parent[key].dump());
+    return static_cast<int>(d);
   }
 
   std::string string(const json& parent, const std::string& key, const std::string& field) const {
     const json& v = member(parent, key, field);
-    if (!v.is_string()) fail(field.empty() ? key : field + "." + key, "expected a string");
+    if (!v.is_string()) fail(field.empty() ? key : field + "." + key, "expected a string, found " + found(v));
     return v.get<std::string>();
   }
 
   double number(const json& v, const std::string& field) const {
-    if (!v.is_number()) fail(field, "expected a number");
+    if (!v.is_number()) fail(field, "expected a number, found " + found(v));
     const double d = v.get<double>();
     if (!std::isfinite(d)) fail(field, "expected a finite number");
     return d;
   }
 
   Eigen::Vector3d vector3(const json& v, const std::string& field) const {
-    if (!v.is_array() || v.size() != 3) fail(field, "expected [x, y, z]");
+    if (!v.is_array() || v.size() != 3) fail(field, "expected [x, y, z], found " + found(v));
     return {number(v[0], field + "[0]"), number(v[1], field + "[1]"), number(v[2], field + "[2]")};
   }
 
@@ -216,6 +246,7 @@ class PlanReader {
       }
       const Model& model = *entity.model;
       const json& joints = model.num_dofs() > 0 ? member(ec, "joints", f) : json::object();
+      object(joints, f + ".joints");
       for (int k = 0; k < model.num_dofs(); ++k) {
         const std::string& name = model.joints[model.dof_joints[k]].name;
         if (!joints.contains(name)) fail(f + ".joints", "missing joint \"" + name + "\"");
@@ -236,9 +267,9 @@ class PlanReader {
     if (!contacts.is_array()) fail(field + ".contacts", "expected an array");
     for (size_t i = 0; i < contacts.size(); ++i) {
       const std::string f = field + ".contacts[" + std::to_string(i) + "]";
-      PlanContact pc{contact(contacts[i], f, scene), contacts[i].value("loaded", true)};
-      pc.contact.bilateral = contacts[i].value("bilateral", false);
-      pc.contact.fixed = contacts[i].value("fixed", false);
+      PlanContact pc{contact(contacts[i], f, scene), flag(contacts[i], "loaded", true, f)};
+      pc.contact.bilateral = flag(contacts[i], "bilateral", false, f);
+      pc.contact.fixed = flag(contacts[i], "fixed", false, f);
       step.contacts.push_back(pc);
     }
     std::vector<Contact> stance;
@@ -268,6 +299,7 @@ class PlanReader {
     step.torques.resize(scene.system.num_entities());
     if (s.contains("torques")) {
       const json& torques = s["torques"];
+      object(torques, field + ".torques");
       for (int e = 0; e < scene.system.num_entities(); ++e) {
         const Entity& entity = scene.system.entity(e);
         const Model& model = *entity.model;
@@ -276,15 +308,18 @@ class PlanReader {
         for (int k = 0; k < model.num_dofs(); ++k) {
           const std::string& name = model.joints[model.dof_joints[k]].name;
           const std::string f = field + ".torques." + entity.name;
+          object(torques[entity.name], f);
           if (!torques[entity.name].contains(name)) fail(f, "missing joint \"" + name + "\"");
           step.torques[e][k] = number(torques[entity.name][name], f + "." + name);
         }
       }
     }
-    if (s.contains("solver") && s["solver"].is_object()) {
-      step.iterations = s["solver"].value("iterations", 0);
-      step.time_ms = s["solver"].value("time_ms", 0.0);
-      step.objective = s["solver"].value("objective", 0.0);
+    if (s.contains("solver")) {
+      const json& solver = s["solver"];
+      object(solver, field + ".solver");
+      step.iterations = whole_number(solver, "iterations", 0, field + ".solver");
+      step.time_ms = optional_number(solver, "time_ms", 0.0, field + ".solver");
+      step.objective = optional_number(solver, "objective", 0.0, field + ".solver");
     }
     return step;
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 #include "planner/util/input_error.h"
@@ -49,6 +50,8 @@ class ScenarioReader {
     expect_keys(stances, "stances", {"initial", "goal"});
     s.initial_stance = read_stance(require(stances, "initial", "stances"), "stances.initial", s.scene);
     s.goal_stance = read_stance(require(stances, "goal", "stances"), "stances.goal", s.scene);
+    require_support(stances["initial"], "stances.initial", s.initial_stance, s);
+    require_support(stances["goal"], "stances.goal", s.goal_stance, s);
     read_guide(root["guide"], s);
     read_weights(root["weights"], s);
     read_search(root["search"], s);
@@ -84,11 +87,17 @@ class ScenarioReader {
     return node;
   }
 
+  // A mapping's key: a plain word (a list or mapping as a key is a fault of the file).
+  std::string key_of(const YAML::Node& key, const std::string& field) const {
+    if (!key.IsScalar()) fail(key, field, "expected a field name, found a " + std::string(key.IsSequence() ? "list" : key.IsMap() ? "mapping" : "null"));
+    return key.Scalar();
+  }
+
   // Unknown keys are errors: a misspelt field must not be silently ignored.
   void expect_keys(const YAML::Node& node, const std::string& field, std::initializer_list<const char*> keys) const {
     if (!node.IsMap()) fail(node, field, "expected a mapping");
     for (const auto& item : node) {
-      const std::string key = item.first.as<std::string>();
+      const std::string key = key_of(item.first, field);
       if (std::none_of(keys.begin(), keys.end(), [&](const char* k) { return key == k; })) {
         std::string known;
         for (const char* k : keys) known += std::string(known.empty() ? "" : ", ") + k;
@@ -121,7 +130,7 @@ class ScenarioReader {
 
   int integer(const YAML::Node& node, const std::string& field, int min) const {
     const double v = number(node, field);
-    if (v != std::floor(v) || v < min)
+    if (v != std::floor(v) || v < min || v > std::numeric_limits<int>::max())
       fail(node, field, "expected a whole number >= " + std::to_string(min) + ", found " + node.Scalar());
     return static_cast<int>(v);
   }
@@ -214,7 +223,7 @@ class ScenarioReader {
     if (!joints.IsMap()) fail(joints, join(field, "joints"), "expected a mapping joint name: value (rad or m)");
     const Model& model = *entity.model;
     for (const auto& item : joints) {
-      const std::string name = item.first.as<std::string>();
+      const std::string name = key_of(item.first, join(field, "joints"));
       const std::string f = join(field, "joints." + name);
       const int dof = model.find_dof(name);
       if (dof < 0) {
@@ -277,6 +286,17 @@ class ScenarioReader {
     return out;
   }
 
+  // Under gravity a floating entity needs at least one contact to be in static equilibrium (E16):
+  // an empty stance could never be realised, so it is a fault of the file, not a search failure.
+  void require_support(const YAML::Node& node, const std::string& field, const std::vector<StanceContact>& stance,
+                       const Scenario& s) const {
+    if (!stance.empty() || s.spec.gravity.norm() == 0.0) return;
+    for (const Entity& entity : s.scene.system.entities())
+      if (entity.floating())
+        fail(node, field, "expected at least one contact, found none: the floating entity \"" + entity.name +
+                              "\" cannot be in static equilibrium under gravity without one");
+  }
+
   // Milestones are partial: what a milestone leaves out keeps its value from the previous one
   // (the first continues the initial configuration).
   void read_guide(const YAML::Node& node, Scenario& s) const {
@@ -290,7 +310,7 @@ class ScenarioReader {
       std::vector<std::pair<std::string, std::string>> pairs;
       Eigen::VectorXd stated = Eigen::VectorXd::Zero(q.size());
       for (const auto& item : node[i]) {
-        const std::string name = item.first.as<std::string>();
+        const std::string name = key_of(item.first, f);
         if (name == "tolerance") {
           tolerance = positive(item.second, f + ".tolerance");
           continue;

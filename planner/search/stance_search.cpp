@@ -10,6 +10,7 @@
 #include "planner/io/plan_step.h"
 #include "planner/model/kinematics.h"
 #include "planner/search/candidates.h"
+#include "planner/search/plan_path.h"
 #include "planner/solver/posture_solver.h"
 #include "planner/solver/solver_pool.h"
 
@@ -225,10 +226,7 @@ SearchResult StanceSearch::run() {
     }
   };
   auto found = [&](int goal_node) {
-    std::vector<int> path;
-    for (int i = goal_node; i >= 0; i = tree[i].parent) path.push_back(i);
-    std::reverse(path.begin(), path.end());
-    for (int i : path) result.plan.steps.push_back(tree[i].step);
+    result.plan.steps = plan_to_node(tree, goal_node).steps;
     result.closest_node = goal_node;
     result.milestone = t;
     SearchEvent e;
@@ -239,7 +237,7 @@ SearchResult StanceSearch::run() {
     e.milestone = t;
     e.nodes = int(tree.size());
     publish(e);
-    return finish(PlanStatus::Found, "plan of " + std::to_string(path.size()) + " steps");
+    return finish(PlanStatus::Found, "plan of " + std::to_string(result.plan.steps.size()) + " steps");
   };
 
   {

@@ -36,6 +36,9 @@ struct PostureResult {
   // "joint_limits", "friction".
   std::map<std::string, double> residuals;
   std::string worst_family() const;  // the family with the largest residual
+  // "" when every number of the solution (q, forces, torques, placements) is finite; else the
+  // first that is not, e.g. "q[12]" or "force 3".
+  std::string non_finite_part() const;
   // With SolverOptions::diagnose_infeasibility: the family without which the request is solved
   // ("torque_limits", "collision"), or "" when the geometry/statics themselves are infeasible.
   std::string blocking_family;

@@ -6,6 +6,8 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "planner/collision/signed_distance.h"
 #include "planner/model/kinematics.h"
@@ -15,6 +17,20 @@
 namespace stanceplan {
 namespace {
 
+// "" when the guess can be used; else why not: a non-finite entry of q_init or q_ref, or a zero
+// base quaternion (kinematics divide by its norm: every pose would be NaN, which the collision
+// library asserts on).
+std::string unusable_guess(const System& system, const PostureRequest& request) {
+  for (const auto& [name, q] : {std::pair{"q_init", &request.q_init}, std::pair{"q_ref", &request.q_ref}})
+    for (int i = 0; i < q->size(); ++i)
+      if (!std::isfinite((*q)[i]))
+        return "the initial guess is not finite (" + std::string(name) + "[" + std::to_string(i) + "] = " +
+               std::to_string((*q)[i]) + ")";
+  for (int e = 0; e < system.num_entities(); ++e)
+    if (system.entity(e).floating() && request.q_init.segment<4>(system.offset(e) + Entity::kBaseQuaternion).norm() < 1e-9)
+      return "the initial guess has a zero base quaternion (entity \"" + system.entity(e).name + "\")";
+  return "";
+}
 
 // Signed distance of every candidate pair that is not excluded (+inf for excluded ones).
 std::vector<double> pair_distances(const Scene& scene, const Eigen::VectorXd& q,
@@ -111,7 +127,6 @@ void PostureSolver::validate(const PostureRequest& request) const {
   if (request.q_ref.size() != 0 && request.q_ref.size() != system.nq())
     throw std::invalid_argument("q_ref has " + std::to_string(request.q_ref.size()) +
                                 " entries, the system has " + std::to_string(system.nq()));
-  if (!request.q_init.allFinite()) throw std::invalid_argument("q_init is not finite");
   // A surface is the smaller side (s1) of at most one contact and then of nothing else; a larger
   // surface (s2, e.g. the floor) may support several contacts.
   std::vector<SurfaceRef> smaller, larger;
@@ -170,7 +185,20 @@ std::vector<bool> PostureSolver::excluded_pairs(const PostureRequest& request) c
 
 PostureResult PostureSolver::solve(const PostureRequest& request) const {
   validate(request);
+  // An unusable guess (e.g. a NaN from a degenerate configuration upstream) is a failed candidate
+  // with its reason, not a malformed request; Ipopt never sees it.
+  if (std::string reason = unusable_guess(scene_.system, request); !reason.empty()) {
+    PostureResult result;
+    result.status = PostureStatus::NumericalFailure;
+    result.message = std::move(reason);
+    return result;
+  }
   PostureResult result = solve_once(request, options_);
+  // No NaN reaches a plan: a "solved" result with a non-finite number in it is a failure.
+  if (const std::string part = result.non_finite_part(); result.status == PostureStatus::Solved && !part.empty()) {
+    result.status = PostureStatus::NumericalFailure;
+    result.message = "non-finite " + part + " in the solution (" + result.message + ")";
+  }
   if (result.status != PostureStatus::Solved && options_.diagnose_infeasibility) diagnose(request, result);
   return result;
 }

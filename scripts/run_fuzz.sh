@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/, clang, -DSTANCEPLAN_FUZZ=ON) and runs each one in turn for
+# FUZZ_SECONDS (default 60) on one core, starting from the seed corpus made at configure time.
+# New corpus entries go to FUZZ_BUILD_DIR/fuzz/corpus-out/TARGET (not into the source tree); a
+# crash leaves crash-* / leak-* / oom-* / timeout-* in FUZZ_BUILD_DIR/fuzz/artifacts/ and fails
+# the script (fuzz/lsan.supp lists a third-party leak on an error path).
+# Usage: scripts/run_fuzz.sh [TARGET...]  (default: scenario surfaces plan urdf)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build_dir=${FUZZ_BUILD_DIR:-$root/build-fuzz}
+seconds=${FUZZ_SECONDS:-60}
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=(scenario surfaces plan urdf)
+
+CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DSTANCEPLAN_FUZZ=ON \
+  -DSTANCEPLAN_BUILD_TESTS=OFF -DSTANCEPLAN_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build "$build_dir" -j "${JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}"
+
+artifacts="$build_dir/fuzz/artifacts"
+mkdir -p "$artifacts"
+for t in "${targets[@]}"; do
+  out="$build_dir/fuzz/corpus-out/$t"
+  mkdir -p "$out"
+  echo "fuzz: $t for ${seconds} s"
+  # One process, one core. -timeout: no input may take 10 s; -rss_limit_mb: ASan's shadow memory.
+  log="$build_dir/fuzz/$t.log"
+  status=0
+  LSAN_OPTIONS="suppressions=$root/fuzz/lsan.supp ${LSAN_OPTIONS:-}" "$build_dir/fuzz/fuzz_$t" "$out" "$build_dir/fuzz/corpus/$t" -max_total_time="$seconds" -timeout=10 \
+    -rss_limit_mb=4096 -artifact_prefix="$artifacts/$t-" -print_final_stats=1 >"$log" 2>&1 || status=$?
+  grep -E "^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec|Done [0-9]+ runs)|ERROR|SUMMARY" "$log" | tail -8 || true
+  if [ "$status" -ne 0 ]; then
+    tail -60 "$log" >&2
+    echo "fuzz: $t found a fault (exit $status); the input is in $artifacts" >&2
+    exit 1
+  fi
+done
