@@ -22,7 +22,8 @@ if [[ "${STANCEPLAN_ASAN:-1}" != 0 ]]; then
   cmake -S "$root" -B "$asan_dir" -DCMAKE_BUILD_TYPE=Release -DSTANCEPLAN_SANITIZER=address \
     -DSTANCEPLAN_BUILD_BENCHMARKS=OFF "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" >/dev/null
   cmake --build "$asan_dir" -j "${JOBS:-$(nproc)}"
-  ctest --test-dir "$asan_dir" --output-on-failure -j "${JOBS:-$(nproc)}"
+  LSAN_OPTIONS="suppressions=$root/tests/lsan.supp ${LSAN_OPTIONS:-}" \
+    ctest --test-dir "$asan_dir" --output-on-failure -j "${JOBS:-$(nproc)}"
 fi
 # libFuzzer: every target of fuzz/ for FUZZ_SECONDS (60) each (scripts/run_fuzz.sh). STANCEPLAN_FUZZ=0 skips it.
 if [[ "${STANCEPLAN_FUZZ:-1}" != 0 ]]; then
