@@ -12,8 +12,8 @@
 #include "app/plan_command.h"
 #include "app/posture_command.h"
 #include "app/render_command.h"
-#include "planner/util/input_error.h"
 #include "app/gui/panel_command.h"
+#include "planner/util/input_error.h"
 
 namespace stanceplan::app {
 namespace {

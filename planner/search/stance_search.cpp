@@ -248,11 +248,11 @@ SearchResult StanceSearch::run() {
     e.accepted = true;
     e.q = tree[0].q();
     e.contacts = tree[0].step.contacts;
+    e.forces = tree[0].step.forces;
+    e.time_ms = root_result.time_ms;
     e.iterations = root_result.iterations;
     e.torques = root_result.torques;
     e.residuals = root_result.residuals;
-    e.forces = tree[0].step.forces;
-    e.time_ms = root_result.time_ms;
     e.nodes = 1;
     if (!publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
   }
@@ -287,10 +287,10 @@ SearchResult StanceSearch::run() {
       e.node = n;
       e.stance = tree[n].stance();
       e.q = tree[n].q();
-      e.iterations = tree[n].step.iterations;
-      e.torques = tree[n].step.torques;
       e.contacts = tree[n].step.contacts;
       e.forces = tree[n].step.forces;
+      e.iterations = tree[n].step.iterations;
+      e.torques = tree[n].step.torques;
       e.milestone = t;
       e.nodes = int(tree.size());
       if (!publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
@@ -359,11 +359,11 @@ SearchResult StanceSearch::run() {
       e.message = r.message;
       e.q = r.q;
       for (const ContactTask& task : requests[i].contacts) e.contacts.push_back({task.contact, task.loaded});
+      e.forces = r.forces;
+      e.time_ms = r.time_ms;
       e.iterations = r.iterations;
       e.torques = r.torques;
       e.residuals = r.residuals;
-      e.forces = r.forces;
-      e.time_ms = r.time_ms;
       if (r.status == PostureStatus::Solved) {
         SearchNode child = make_node(a.node, requests[i], r, next, a.candidate.add ? "add" : "remove",
                                      a.candidate.contact);
