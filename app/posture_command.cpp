@@ -14,16 +14,9 @@ int run_posture(const PostureOptions& options, std::ostream& out, std::ostream& 
   const Scenario scenario = load_scenario(options.scenario);
   const bool goal = options.stance == "goal";
   const std::vector<StanceContact>& contacts = goal ? scenario.goal_stance : scenario.initial_stance;
-  PostureRequest request;
-  for (const StanceContact& c : contacts) {
-    ContactTask task;
-    task.contact = c.contact;
-    task.placement = c.placement;
-    request.contacts.push_back(task);
-  }
   // The goal's best guess is the last milestone (the guide path ends at q_goal).
-  request.q_init = goal && !scenario.milestones.empty() ? scenario.milestones.back() : scenario.initial_configuration;
-  request.q_ref = request.q_init;
+  const PostureRequest request = scenario.loaded_request(
+      contacts, goal && !scenario.milestones.empty() ? scenario.milestones.back() : scenario.initial_configuration);
   SolverOptions solver_options = scenario.solver;
   solver_options.diagnose_infeasibility = true;
   const PostureSolver solver(scenario.scene, solver_options);

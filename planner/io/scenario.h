@@ -41,6 +41,9 @@ struct Scenario {
   SearchOptions search;
 
   Stance stance(const std::vector<StanceContact>& contacts) const;
+  // A solver request realising `contacts` with every one loaded at its stated placement (free when
+  // none is stated), starting from and pulled towards q.
+  PostureRequest loaded_request(const std::vector<StanceContact>& contacts, const Eigen::VectorXd& q) const;
 };
 
 // Throws InputError "FILE:LINE: FIELD: what was expected, what was found" on any fault, and the

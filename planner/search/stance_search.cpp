@@ -121,10 +121,8 @@ SearchResult StanceSearch::run() {
   };
 
   // --- The root: sigma_init realised with every contact loaded.
-  PostureRequest root_request;
-  for (const StanceContact& c : scenario_.initial_stance) root_request.contacts.push_back({c.contact, true, c.placement, std::nullopt});
-  root_request.q_init = scenario_.initial_configuration;
-  root_request.q_ref = scenario_.initial_configuration;
+  const PostureRequest root_request =
+      scenario_.loaded_request(scenario_.initial_stance, scenario_.initial_configuration);
   const PostureResult root_result = solver.solve(root_request);
   ++result.solver_calls;
   result.solver_time_s += root_result.time_ms / 1000.0;

@@ -20,13 +20,10 @@ class TableCarry : public ::testing::Test {
   static void SetUpTestSuite() {
     scenario_ =
         new Scenario(load_scenario(test::source_path("scenarios/two_humanoids_table.yaml")));
-    PostureRequest request;
-    for (const StanceContact& c : scenario_->initial_stance)
-      request.contacts.push_back({c.contact, true, c.placement, std::nullopt});
-    request.q_init = scenario_->initial_configuration;
-    request.q_ref = scenario_->initial_configuration;
-    request_ = new PostureRequest(request);
-    result_ = new PostureResult(PostureSolver(scenario_->scene, scenario_->solver).solve(request));
+    request_ = new PostureRequest(
+        scenario_->loaded_request(scenario_->initial_stance, scenario_->initial_configuration));
+    result_ =
+        new PostureResult(PostureSolver(scenario_->scene, scenario_->solver).solve(*request_));
   }
   static void TearDownTestSuite() {
     delete result_;
