@@ -21,8 +21,8 @@ THIS = "scripts/assets/climb.py"
 
 GAP = dict(
     platform=(0.80, 1.00),  # x (along the climb) and y of each platform
-    height=1.30,            # top faces of both platforms: the height of the supporter's raised forearm
-    gap=0.90,               # between A's +x edge (x = -gap/2) and B's -x edge (x = +gap/2)
+    height=1.55,            # top faces of both platforms: the height of the supporter's raised palm
+    gap=0.80,               # between A's +x edge (x = -gap/2) and B's -x edge (x = +gap/2)
 )
 
 

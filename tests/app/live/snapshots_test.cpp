@@ -104,7 +104,7 @@ TEST(Snapshots, RejectedCandidatesCanBeListedWithoutImages) {
   std::filesystem::create_directories(snaps);
   std::ofstream(std::filesystem::path(snaps) / "event_99999_candidate.png") << "stale";
   const test::CliResult r =
-      test::run_cli({"plan", test::source_path("scenarios/humanoid_climb_on_robot.yaml"), "--out",
+      test::run_cli({"plan", test::source_path("scenarios/dual_arm_cylinder.yaml"), "--out",
                      (dir / "plan.json").string(), "--snapshots", snaps, "--no-rejected-snapshots",
                      "--threads", "1"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -121,7 +121,7 @@ TEST(Snapshots, RejectedCandidatesCanBeListedWithoutImages) {
       ++images;
     }
   }
-  EXPECT_GT(rejected, 0) << "the climb rejects a candidate (the walk no longer rejects any)";
+  EXPECT_GT(rejected, 0) << "the hand-over rejects candidates (the walk and the climb reject none)";
   EXPECT_EQ(test::count_pngs(snaps, "event_"), images);
 }
 
