@@ -2,12 +2,15 @@
 
 #include <console_bridge/console.h>
 
+#include <urdf_parser/urdf_parser.h>
+#include <Eigen/Eigenvalues>
+#include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
-#include <urdf_parser/urdf_parser.h>
 
 #include "planner/util/input_error.h"
 
@@ -21,12 +24,17 @@ class CollectingHandler : public console_bridge::OutputHandler {
  public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
     if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN) messages.push_back(text);
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) ++errors;
   }
   std::vector<std::string> messages;
+  int errors = 0;
 };
 
+// urdfdom 3.0 logs an error and still returns a model when an <inertial>, <visual> or
+// <collision> does not parse (a NaN box size, mass="inf"): the element is dropped or half read.
+// *errors counts those messages so that such a model is rejected rather than used.
 urdf::ModelInterfaceSharedPtr parse_collecting(const std::string& xml,
-                                               std::vector<std::string>* messages) {
+                                               std::vector<std::string>* messages, int* errors) {
   static std::mutex console_mutex;  // console_bridge's handler is global state
   std::lock_guard<std::mutex> lock(console_mutex);
   CollectingHandler handler;
@@ -42,6 +50,7 @@ urdf::ModelInterfaceSharedPtr parse_collecting(const std::string& xml,
   console_bridge::setLogLevel(previous_level);
   console_bridge::restorePreviousOutputHandler();
   *messages = handler.messages;
+  *errors = handler.errors;
   return model;
 }
 
@@ -59,7 +68,29 @@ Eigen::Isometry3d to_isometry(const urdf::Pose& pose) {
   return T;
 }
 
-Eigen::Vector3d to_vector(const urdf::Vector3& v) { return Eigen::Vector3d(v.x, v.y, v.z); }
+Eigen::Vector3d to_vector(const urdf::Vector3& v) {
+  return Eigen::Vector3d(v.x, v.y, v.z);
+}
+
+// The shortest text that reads back as x ("0.1", "-1", "nan").
+std::string number(double x) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+std::string numbers(const Eigen::VectorXd& v) {
+  std::string out;
+  for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? " " : "") + number(v[i]);
+  return out;
+}
+
+bool finite(const urdf::Pose& pose) {
+  return std::isfinite(pose.position.x) && std::isfinite(pose.position.y) &&
+         std::isfinite(pose.position.z) && std::isfinite(pose.rotation.x) &&
+         std::isfinite(pose.rotation.y) && std::isfinite(pose.rotation.z) &&
+         std::isfinite(pose.rotation.w);
+}
 
 class Builder {
  public:
@@ -84,36 +115,74 @@ class Builder {
     Link out;
     out.name = link.name;
     out.parent_link = parent_link;
-    if (link.inertial) read_inertial(*link.inertial, &out.inertial);
+    if (link.inertial) read_inertial(link.name, *link.inertial, &out.inertial);
     for (const auto& visual : link.visual_array)
-      if (visual) add_geometry(link.name, "visual", visual->geometry, visual->origin,
-                               visual->material.get(), &out.visuals);
+      if (visual)
+        add_geometry(link.name, "visual", visual->geometry, visual->origin, visual->material.get(),
+                     &out.visuals);
     for (const auto& collision : link.collision_array)
-      if (collision) add_geometry(link.name, "collision", collision->geometry, collision->origin,
-                                  nullptr, &out.collisions);
+      if (collision)
+        add_geometry(link.name, "collision", collision->geometry, collision->origin, nullptr,
+                     &out.collisions);
     if (parent_joint) out.parent_joint = add_joint(*parent_joint, parent_link, index);
     model_.links.push_back(std::move(out));
     for (const auto& child : link.child_links) add_link(*child, index, child->parent_joint.get());
   }
 
-  void read_inertial(const urdf::Inertial& inertial, Inertial* out) {
-    out->mass = inertial.mass;
-    out->p_LC = to_vector(inertial.origin.position);
+  void read_inertial(const std::string& link_name, const urdf::Inertial& inertial, Inertial* out) {
+    const std::string where = "link \"" + link_name + "\": <inertial> ";
+    if (!finite(inertial.origin)) fail(where + "<origin>: expected finite numbers");
     Eigen::Matrix3d I;
     I << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz,
         inertial.ixz, inertial.iyz, inertial.izz;
+    // A massless frame (mass 0, zero inertia: sensor and tool frames of TALOS and the Panda)
+    // carries nothing and is accepted; a zero mass with a non-zero inertia is not a body.
+    const bool massless_frame = inertial.mass == 0.0 && I.isZero(0.0);
+    if (!(inertial.mass > 0.0) && !massless_frame)  // also NaN
+      fail(where + "mass: expected a positive number (kg)" +
+           (inertial.mass == 0.0 ? " for a link with a non-zero inertia" : "") + ", found " +
+           number(inertial.mass));
+    out->mass = inertial.mass;
+    out->p_LC = to_vector(inertial.origin.position);
+    check_inertia(where, I);
     const Eigen::Matrix3d R = to_isometry(inertial.origin).linear();
     out->I_C = R * I * R.transpose();
+  }
+
+  // A rigid body's rotational inertia has principal moments a, b, c >= 0 with each at most the
+  // sum of the other two (a + b >= c: the moments are sums of second moments of the mass).
+  // Tolerances are relative to the trace. A negative moment is allowed only at rounding level.
+  // The triangle inequality gets 2 %: CAD exporters round the tensor, and TALOS's gripper motor
+  // links exceed it by 1.3 % (statics uses only the mass and centre of mass, so such a tensor is
+  // harmless); a larger excess means a wrong tensor (a mistyped or swapped entry).
+  void check_inertia(const std::string& where, const Eigen::Matrix3d& I) const {
+    if (!I.allFinite())
+      fail(where + "<inertia>: expected finite numbers, found " +
+           numbers(Eigen::Map<const Eigen::VectorXd>(I.data(), 9)));
+    const Eigen::Vector3d moments =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly)
+            .eigenvalues();  // ascending
+    const double trace = std::abs(I.trace());
+    const std::string found = ", found principal moments " + numbers(moments);
+    if (moments[0] < -1e-9 * trace)
+      fail(where + "<inertia>: expected a positive semi-definite matrix" + found);
+    if (moments[2] > moments[0] + moments[1] + 0.02 * trace)
+      fail(where +
+           "<inertia>: expected principal moments that satisfy the triangle inequality "
+           "(each at most the sum of the other two, within 2 % of the trace)" +
+           found);
   }
 
   void add_geometry(const std::string& link_name, const std::string& kind,
                     const urdf::GeometrySharedPtr& geometry, const urdf::Pose& origin,
                     const urdf::Material* material, std::vector<LinkGeometry>* out) {
     if (!geometry) return;
+    const std::string where = "link \"" + link_name + "\": " + kind + " ";
+    if (!finite(origin)) fail(where + "<origin>: expected finite numbers");
     LinkGeometry g;
     g.T_LG = to_isometry(origin);
-    if (material && (material->color.r || material->color.g || material->color.b ||
-                     material->color.a)) {
+    if (material &&
+        (material->color.r || material->color.g || material->color.b || material->color.a)) {
       g.has_color = true;
       g.rgba = Eigen::Vector4d(material->color.r, material->color.g, material->color.b,
                                material->color.a);
@@ -146,7 +215,19 @@ class Builder {
         break;
       }
     }
+    if (g.shape.type != ShapeType::Mesh) check_size(where, g.shape);
     out->push_back(std::move(g));
+  }
+
+  // Box sizes, radii and lengths must be positive; a negative one would turn a body inside out.
+  void check_size(const std::string& where, const Shape& shape) const {
+    const int count = shape.type == ShapeType::Box ? 3 : shape.type == ShapeType::Cylinder ? 2 : 1;
+    const Eigen::VectorXd size = shape.size.head(count);
+    if ((size.array() > 0.0).all()) return;  // false for NaN too
+    const char* what = shape.type == ShapeType::Box        ? "<box> size"
+                       : shape.type == ShapeType::Cylinder ? "<cylinder> radius and length"
+                                                           : "<sphere> radius";
+    fail(where + what + ": expected positive numbers (m), found " + numbers(size));
   }
 
   // False when a visual mesh is missing and tolerated (the geometry is skipped with a warning).
@@ -171,12 +252,23 @@ class Builder {
     out.name = joint.name;
     out.parent_link = parent_link;
     out.child_link = child_link;
+    const std::string where = "joint \"" + joint.name + "\": ";
+    if (!finite(joint.parent_to_joint_origin_transform))
+      fail(where + "<origin>: expected finite numbers");
     out.T_PJ = to_isometry(joint.parent_to_joint_origin_transform);
     switch (joint.type) {
-      case urdf::Joint::REVOLUTE: out.type = JointType::Revolute; break;
-      case urdf::Joint::CONTINUOUS: out.type = JointType::Continuous; break;
-      case urdf::Joint::PRISMATIC: out.type = JointType::Prismatic; break;
-      case urdf::Joint::FIXED: out.type = JointType::Fixed; break;
+      case urdf::Joint::REVOLUTE:
+        out.type = JointType::Revolute;
+        break;
+      case urdf::Joint::CONTINUOUS:
+        out.type = JointType::Continuous;
+        break;
+      case urdf::Joint::PRISMATIC:
+        out.type = JointType::Prismatic;
+        break;
+      case urdf::Joint::FIXED:
+        out.type = JointType::Fixed;
+        break;
       case urdf::Joint::FLOATING:
       case urdf::Joint::PLANAR:
       case urdf::Joint::UNKNOWN:
@@ -189,21 +281,14 @@ class Builder {
     }
     if (out.movable()) {
       const Eigen::Vector3d axis = to_vector(joint.axis);
-      if (axis.norm() < 1e-9) fail("joint \"" + joint.name + "\": the axis is zero");
+      if (!(axis.norm() >= 1e-9))  // also NaN
+        fail(where + "<axis>: expected a non-zero finite vector, found " + numbers(axis));
       out.axis = axis.normalized();
-      if (joint.limits) {
-        out.effort = joint.limits->effort;
-        out.velocity = joint.limits->velocity;
-        if (out.type != JointType::Continuous) {
-          out.has_position_limits = true;
-          out.lower = joint.limits->lower;
-          out.upper = joint.limits->upper;
-          if (out.lower > out.upper)
-            fail("joint \"" + joint.name + "\": lower limit " + std::to_string(out.lower) +
-                 " is above the upper limit " + std::to_string(out.upper));
-        }
-      }
+      if (joint.limits) read_limits(where, *joint.limits, &out);
       if (joint.mimic) {
+        if (!std::isfinite(joint.mimic->multiplier) || !std::isfinite(joint.mimic->offset))
+          fail(where + "<mimic>: expected a finite multiplier and offset, found " +
+               number(joint.mimic->multiplier) + " and " + number(joint.mimic->offset));
         out.is_mimic = true;
         out.mimic_source = joint.mimic->joint_name;
         out.multiplier = joint.mimic->multiplier;
@@ -215,6 +300,22 @@ class Builder {
     }
     model_.joints.push_back(std::move(out));
     return static_cast<int>(model_.joints.size()) - 1;
+  }
+
+  void read_limits(const std::string& where, const urdf::JointLimits& limits, Joint* out) const {
+    if (!(limits.effort >= 0.0))
+      fail(where + "<limit> effort: expected a number >= 0, found " + number(limits.effort));
+    if (!(limits.velocity >= 0.0))
+      fail(where + "<limit> velocity: expected a number >= 0, found " + number(limits.velocity));
+    out->effort = limits.effort;
+    out->velocity = limits.velocity;
+    if (out->type == JointType::Continuous) return;  // a continuous joint's lower/upper are unused
+    if (!std::isfinite(limits.lower) || !std::isfinite(limits.upper) || limits.lower > limits.upper)
+      fail(where + "<limit>: expected finite lower <= upper, found lower " + number(limits.lower) +
+           " and upper " + number(limits.upper));
+    out->has_position_limits = true;
+    out->lower = limits.lower;
+    out->upper = limits.upper;
   }
 
   // A mimic joint's value is multiplier * source + offset; chains of mimics are composed.
@@ -241,6 +342,11 @@ class Builder {
         multiplier *= src.multiplier;
         source = src.mimic_source;
       }
+      if (!std::isfinite(multiplier) || !std::isfinite(offset))
+        fail("joint \"" + joint.name +
+             "\": <mimic>: expected a chain whose composed multiplier "
+             "and offset are finite, found " +
+             number(multiplier) + " and " + number(offset));
       joint.multiplier = multiplier;
       joint.offset = offset;
     }
@@ -257,8 +363,9 @@ class Builder {
 Model load_urdf_string(const std::string& xml, const std::string& base_dir,
                        const UrdfOptions& options, const std::string& display_name) {
   std::vector<std::string> messages;
-  const urdf::ModelInterfaceSharedPtr urdf = parse_collecting(xml, &messages);
-  if (!urdf) {
+  int errors = 0;
+  const urdf::ModelInterfaceSharedPtr urdf = parse_collecting(xml, &messages, &errors);
+  if (!urdf || errors > 0) {
     std::string what = display_name + ": not a valid URDF";
     if (!messages.empty()) what += ": " + join(messages, "; ");
     throw InputError(what);

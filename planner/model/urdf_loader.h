@@ -3,7 +3,11 @@
 // fixed joints; mimic joints become dependent joints (a <mimic> on a fixed joint is ignored);
 // position/effort limits; inertials; visual and collision geometry (box, cylinder, sphere, mesh).
 // Floating and planar joints inside the tree are rejected. Throws InputError naming the file and
-// the fault (missing file, malformed XML, two roots, unknown mimic source, unresolvable mesh URI).
+// the fault (missing file, malformed XML, two roots, unknown mimic source, unresolvable mesh URI,
+// an element urdfdom could not parse, and physically meaningless values: a mass <= 0, an inertia
+// that is not positive semi-definite or breaks the triangle inequality, a zero axis, lower >
+// upper, a negative effort or velocity limit, a box/sphere/cylinder size <= 0, a non-finite
+// number), with the link or joint and what was expected and found.
 #include <string>
 
 #include "planner/model/model.h"
@@ -20,6 +24,7 @@ struct UrdfOptions {
 
 Model load_urdf(const std::string& path, const UrdfOptions& options = {});
 Model load_urdf_string(const std::string& xml, const std::string& base_dir,
-                       const UrdfOptions& options = {}, const std::string& display_name = "<string>");
+                       const UrdfOptions& options = {},
+                       const std::string& display_name = "<string>");
 
 }  // namespace stanceplan
