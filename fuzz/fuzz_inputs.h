@@ -24,7 +24,7 @@
 
 namespace stanceplan::fuzz {
 
-enum class Target { Scenario, Surfaces, Plan, Urdf };
+enum class Target { Scenario, Surfaces, Plan, Urdf, Srdf };
 
 struct Outcome {
   bool accepted = false;  // the loader took the input
@@ -55,6 +55,8 @@ inline std::filesystem::path input_path(Target target, const std::filesystem::pa
       return work / "fuzz" / "corpus" / "plan" / "input.json";
     case Target::Urdf:
       return work / "input.urdf";
+    case Target::Srdf:
+      return work / "input.srdf";
   }
   return work / "input";
 }
@@ -75,6 +77,21 @@ inline const std::vector<std::shared_ptr<const Model>>& surface_models() {
     return out;
   }();
   return models;
+}
+
+// The humanoid as a floating entity "robot": what an SRDF's disabled pairs are applied to.
+inline const System& srdf_system() {
+  static const System system = [] {
+    System out;
+    Entity entity;
+    entity.name = "robot";
+    entity.kind = EntityKind::FloatingRobot;
+    entity.model = std::make_shared<Model>(
+        load_urdf((source_dir() / "assets" / "robots" / "humanoid" / "humanoid.urdf").string()));
+    out.add(std::move(entity));
+    return out;
+  }();
+  return system;
 }
 
 // A model that loads is also put through what a scene does with it: a floating entity, forward
@@ -122,6 +139,14 @@ inline Outcome run_one(Target target, std::string_view bytes, const std::filesys
         use_model(load_urdf_string(std::string(bytes),
                                    (work / "assets" / "robots" / "humanoid").string(), options,
                                    path.string()));
+        break;
+      }
+      case Target::Srdf: {
+        // The loader, then what the collision model does with its pairs.
+        CollisionOptions options;
+        options.srdf_files = {{"robot", path.string()}};
+        CollisionModel collision(srdf_system(), options);
+        (void)collision;
         break;
       }
     }

@@ -4,13 +4,13 @@
 # New corpus entries go to FUZZ_BUILD_DIR/fuzz/corpus-out/TARGET (not into the source tree); a
 # crash leaves crash-* / leak-* / oom-* / timeout-* in FUZZ_BUILD_DIR/fuzz/artifacts/ and fails
 # the script (fuzz/lsan.supp lists a third-party leak on an error path).
-# Usage: scripts/run_fuzz.sh [TARGET...]  (default: scenario surfaces plan urdf)
+# Usage: scripts/run_fuzz.sh [TARGET...]  (default: scenario surfaces plan urdf srdf)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scenario surfaces plan urdf)
+[ ${#targets[@]} -eq 0 ] && targets=(scenario surfaces plan urdf srdf)
 
 CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DSTANCEPLAN_FUZZ=ON \
   -DSTANCEPLAN_BUILD_TESTS=OFF -DSTANCEPLAN_BUILD_BENCHMARKS=OFF >/dev/null

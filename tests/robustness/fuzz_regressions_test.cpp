@@ -73,6 +73,9 @@ TEST(FuzzRegressions, PlanInputsEndCleanly) {
 TEST(FuzzRegressions, UrdfInputsEndCleanly) {
   replay(Target::Urdf, "urdf");
 }
+TEST(FuzzRegressions, SrdfInputsEndCleanly) {
+  replay(Target::Srdf, "srdf");
+}
 
 // The seeds themselves load (so the fuzzers start from valid inputs, and the work folder layout
 // resolves their relative paths).
@@ -83,7 +86,8 @@ TEST(FuzzRegressions, TheSeedsAreAccepted) {
       {Target::Scenario, "scenarios/humanoid_walk.yaml"},
       {Target::Surfaces, "assets/robots/humanoid/humanoid.surfaces.yaml"},
       {Target::Plan, "fuzz/corpus/plan/walk_3_steps.json"},
-      {Target::Urdf, "assets/robots/humanoid/humanoid.urdf"}};
+      {Target::Urdf, "assets/robots/humanoid/humanoid.urdf"},
+      {Target::Srdf, "fuzz/corpus/srdf/humanoid.srdf"}};
   for (const auto& [target, seed] : seeds) {
     const fuzz::Outcome outcome = fuzz::run_one(target, read_bytes(test::source_path(seed)), work);
     EXPECT_TRUE(outcome.accepted) << seed << ": " << outcome.error;
