@@ -134,7 +134,7 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
       if (e.kind == SearchEventKind::Candidate)
         err << (e.candidate_case == CandidateCase::Add ? " add " : e.candidate_case == CandidateCase::Remove ? " remove " : " ")
             << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " (" << std::fixed
-            << std::setprecision(1) << e.time_ms << " ms)";
+            << std::setprecision(1) << e.time_ms << " ms, " << e.iterations << " iterations)";
       err << "\n";
     } else if (live) {
       err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones << "  solver calls "

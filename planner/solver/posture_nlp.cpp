@@ -44,6 +44,7 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
     }
     m_ += block->rows();
   }
+  groups_ = make_hessian_groups(system, state_.constants, layout_);
   J_.setZero(m_, layout_.n);
   H_.setZero(layout_.n, layout_.n);
   grad_.setZero(layout_.n);
@@ -170,6 +171,13 @@ void PostureNlp::lagrangian_gradient(double obj_factor, const Eigen::Ref<const E
   out.noalias() += J_.transpose() * y;
 }
 
+double PostureNlp::symmetric_entry(int i, int j) const {
+  const bool ij = groups_.readable(i, j) || groups_.structural_zero(i, j);
+  const bool ji = groups_.readable(j, i) || groups_.structural_zero(j, i);
+  if (ij && ji) return 0.5 * (H_(i, j) + H_(j, i));
+  return ij ? H_(i, j) : H_(j, i);  // make_hessian_groups guarantees one side
+}
+
 void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, const double* y_in,
                                 double* values) {
   update(x, new_x);
@@ -177,17 +185,22 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
   const int nq = layout_.nq;
   lagrangian_gradient(obj_factor, y, grad_);
   H_.setZero();
-  // Forward differences of the exact gradient along each configuration direction give the
-  // q-q block and the lambda-q block (columns k < nq).
+  // Forward differences of the exact gradient along the configuration directions give the q-q
+  // block and the lambda-q block (columns k < nq), several columns per evaluation where their
+  // entities share no contact (hessian_groups.h).
   x_step_ = Eigen::Map<const Eigen::VectorXd>(x, n());
-  for (int k = 0; k < nq; ++k) {
-    const double h = 1e-7 * std::max(1.0, std::abs(x_step_[k]));
-    const double saved = x_step_[k];
-    x_step_[k] = saved + h;
+  for (const std::vector<int>& group : groups_.groups) {
+    for (int k : group) x_step_[k] += 1e-7 * std::max(1.0, std::abs(x[k]));
     state_.set_x(x_step_.data());
     lagrangian_gradient(obj_factor, y, grad_step_);
-    H_.col(k) = (grad_step_ - grad_) / h;
-    x_step_[k] = saved;
+    for (int k : group) {
+      const double h = 1e-7 * std::max(1.0, std::abs(x[k]));
+      H_.col(k) = (grad_step_ - grad_) / h;
+      x_step_[k] = x[k];
+      if (group.size() == 1) continue;
+      for (int i = 0; i < n(); ++i)
+        if (groups_.structural_zero(i, k)) H_(i, k) = 0.0;
+    }
   }
   state_.set_x(x);  // later calls with new_x = false expect the state at x
   // lambda-lambda: the constraints are linear in lambda; the objective contributes
@@ -208,7 +221,7 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
     for (int j = 0; j <= i; ++j) {
       // Symmetrise the differenced q-q block; below it, column j < nq of row i >= nq is d/dq_j of
       // the lambda-gradient, exact up to the difference error.
-      values[k++] = (i < nq) ? 0.5 * (H_(i, j) + H_(j, i)) : H_(i, j);
+      values[k++] = (i < nq) ? symmetric_entry(i, j) : H_(i, j);
     }
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "planner/solver/constraint_block.h"
+#include "planner/solver/hessian_groups.h"
 #include "planner/solver/objective.h"
 
 namespace stanceplan {
@@ -57,6 +58,10 @@ class PostureNlp {
   void lagrangian_gradient(double obj_factor, const Eigen::Ref<const Eigen::VectorXd>& y,
                            Eigen::Ref<Eigen::VectorXd> out);
 
+  // Entry (i, j) of the q-q block from the differenced columns i and j (either or both).
+  double symmetric_entry(int i, int j) const;
+
+  HessianGroups groups_;
   Eigen::MatrixXd J_;
   Eigen::MatrixXd H_;
   Eigen::VectorXd grad_, grad_step_, x_step_;
