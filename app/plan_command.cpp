@@ -22,6 +22,7 @@
 #include "planner/io/plan_writer.h"
 #include "planner/search/plan_path.h"
 #include "planner/search/stance_search.h"
+#include "planner/util/fork_gate.h"
 
 namespace stanceplan::app {
 namespace {
@@ -143,8 +144,13 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
   };
   {
     CancelOnSignal on_signal(session);
-    session.start();
-    if (snapshots) snapshots->start();
+    {
+      // The search forks its solver workers at once: not while this thread is still starting
+      // the snapshot thread (planner/util/fork_gate.h; a worker hung so under ASan).
+      const ForkGate::Pass pass;
+      session.start();
+      if (snapshots) snapshots->start();
+    }
     follow(session, report);
   }
   if (live && !options.verbose) err << "\n";

@@ -28,6 +28,7 @@
 #include "app/live/event_record.h"
 #include "app/live/plan_session.h"
 #include "planner/io/plan_writer.h"
+#include "planner/util/fork_gate.h"
 #include "render/png_io.h"
 #include "render/scene_assembly.h"
 #include "render/step_caption.h"
@@ -161,9 +162,12 @@ int PanelApp::run(std::ostream& out, std::ostream& err) {
     // Scripted runs count their frames from the start, or from the end of the search.
     if (!options_.frames_after_search || mirror_.finished()) ++frames;
     const bool final_frame = options_.exit_after_frames > 0 && frames >= options_.exit_after_frames;
-    window_.begin_frame();
-    sync(dt);
-    frame(final_frame, out, err);
+    {
+      const ForkGate::Pass pass;  // the search forks between frames (planner/util/fork_gate.h)
+      window_.begin_frame();
+      sync(dt);
+      frame(final_frame, out, err);
+    }
     frame_ms_.push_back(ms_since(start));  // the panel's own work: events, drawing, upload
     if (final_frame) window_.request_close();
   }

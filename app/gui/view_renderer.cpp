@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "planner/util/fork_gate.h"
+
 namespace stanceplan::gui {
 
 using Clock = std::chrono::steady_clock;
@@ -92,6 +94,7 @@ void ViewRenderer::loop() {
         id = next_id_;
       }
     }
+    const ForkGate::Pass pass;  // the search forks between renders (planner/util/fork_gate.h)
     try {
       if (job) {
         if (!renderer_) renderer_ = std::make_unique<render::Renderer>(64, 64, style_, meshes_);

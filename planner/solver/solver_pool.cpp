@@ -11,6 +11,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "planner/util/fork_gate.h"
+
 namespace stanceplan {
 namespace {
 
@@ -246,6 +248,9 @@ SolverPool::Worker SolverPool::spawn() {
   // Output still buffered in this process would be copied into the worker and written again
   // when the worker's Ipopt flushes stdout.
   std::fflush(nullptr);
+  // While no other thread of ours is inside its work: under ASan a child could otherwise inherit
+  // an allocator lock held for good (planner/util/fork_gate.h).
+  const ForkGate::Closed no_other_work;
   const pid_t pid = fork();
   if (pid == 0) {  // the worker: answer requests until the parent closes the pipe
     close(down[1]);
