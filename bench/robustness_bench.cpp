@@ -7,25 +7,21 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
-#include <cstdio>
 #include <string>
 #include <vector>
 
+#include "bench/scenario_list.h"
 #include "planner/io/scenario.h"
 #include "planner/search/stance_search.h"
 
 namespace stanceplan {
 namespace {
 
-const std::vector<std::string> kScenarios = {
-    "humanoid_walk",     "humanoid_sit_desk",   "hand_ball_rotate",       "hand_pen_regrasp",
-    "dual_arm_cylinder", "two_humanoids_table", "humanoid_climb_on_robot"};
-
 constexpr std::array<std::array<double, 2>, 8> kOffsets = {
     {{0.01, 0}, {-0.01, 0}, {0, 0.01}, {0, -0.01}, {0.02, 0}, {-0.02, 0}, {0, 0.02}, {0, -0.02}}};
 
 void plan_perturbed(benchmark::State& state, const std::string& name) {
-  const std::string path = std::string(STANCEPLAN_SOURCE_DIR) + "/scenarios/" + name + ".yaml";
+  const std::string path = bench::scenario_path(name);
   int found = 0, tried = 0;
   for (auto _ : state) {
     for (const auto& offset : kOffsets) {
@@ -47,20 +43,7 @@ void plan_perturbed(benchmark::State& state, const std::string& name) {
   state.counters["tried"] = tried;
 }
 
-bool register_all() {
-  for (const std::string& name : kScenarios) {
-    const std::string path = std::string(STANCEPLAN_SOURCE_DIR) + "/scenarios/" + name + ".yaml";
-    if (FILE* f = std::fopen(path.c_str(), "r")) {
-      std::fclose(f);
-      benchmark::RegisterBenchmark(name.c_str(), plan_perturbed, name)
-          ->Iterations(1)
-          ->Unit(benchmark::kSecond)
-          ->UseRealTime();
-    }
-  }
-  return true;
-}
-const bool registered = register_all();
+const auto registered = bench::register_scenarios(plan_perturbed);
 
 }  // namespace
 }  // namespace stanceplan
