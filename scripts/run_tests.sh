@@ -18,17 +18,14 @@ fi
 # AddressSanitizer + UndefinedBehaviorSanitizer over the suite, in its own tree (-O1, as sanitizer
 # builds usually are: quicker to compile than -O3), except the whole plans of the paper's scenarios
 # (label slow: 50-65 s each under ASan here; they run in the normal build above). STANCEPLAN_ASAN=0
-# skips it. Also left out here: the main job's Xvfb panel window test, which stalls under ASan
-# (seen once: the window process idle for 8 minutes with its two solver workers; not yet
-# understood); it runs in the normal build, and the panel command's window tests run here.
+# skips it. (The solver workers' forks under ASan: planner/util/fork_gate.h.)
 if [[ "${STANCEPLAN_ASAN:-1}" != 0 ]]; then
   asan_dir=${ASAN_BUILD_DIR:-$root/build-asan}
   cmake -S "$root" -B "$asan_dir" -DCMAKE_BUILD_TYPE=Release -DSTANCEPLAN_SANITIZER=address \
     -DSTANCEPLAN_BUILD_BENCHMARKS=OFF "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" >/dev/null
   cmake --build "$asan_dir" -j "${JOBS:-$(nproc)}"
   LSAN_OPTIONS="suppressions=$root/tests/lsan.supp ${LSAN_OPTIONS:-}" \
-    ctest --test-dir "$asan_dir" --output-on-failure -j "${JOBS:-$(nproc)}" --timeout 900 -LE slow \
-      -E '^PanelWindow\.TheMainJobOpensThePanelAndSavesTheWindow$'
+    ctest --test-dir "$asan_dir" --output-on-failure -j "${JOBS:-$(nproc)}" --timeout 900 -LE slow
 fi
 # libFuzzer: every target of fuzz/ for FUZZ_SECONDS (60) each (scripts/run_fuzz.sh). STANCEPLAN_FUZZ=0 skips it.
 if [[ "${STANCEPLAN_FUZZ:-1}" != 0 ]]; then

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <regex>
 #include <stdexcept>
 
@@ -109,7 +110,15 @@ SnapshotWriter::~SnapshotWriter() {
 }
 
 void SnapshotWriter::start() {
-  thread_ = std::thread([this] { run(); });
+  // Returns once the thread runs: its start (the C++ runtime's and a sanitizer's allocations) is
+  // over before the caller lets the search fork its workers (plan_command.cpp, fork_gate.h).
+  std::promise<void> running;
+  std::future<void> started = running.get_future();
+  thread_ = std::thread([this, &running] {
+    running.set_value();
+    run();
+  });
+  started.wait();
 }
 
 SnapshotStats SnapshotWriter::finish() {

@@ -7,7 +7,9 @@
 // may fork (the panel's frames, its render thread) hold a ForkGate::Pass while they work, and
 // SolverPool forks inside a ForkGate::Closed: while no Pass is held. A Pass never waits for a
 // pending fork, only for one in progress (microseconds), so a thread holding a Pass may wait on
-// another that takes one. Nothing is held in a child; a child must not take a Pass.
+// another that takes one; the price: a thread that takes passes back to back without a pause holds
+// a fork off (the panel and its render thread wait between frames). Nothing is held in a child; a
+// child must not take a Pass.
 namespace stanceplan {
 
 class ForkGate {
