@@ -83,7 +83,7 @@ TEST(ForkGate, ChildrenForkedUnderTheGateFinishWhileAnotherThreadAllocates) {
     }
   });
   int clean_exits = 0;
-  const int forks = 50;
+  const int forks = 20;
   for (int i = 0; i < forks; ++i) {
     pid_t pid;
     {
