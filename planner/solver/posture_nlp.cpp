@@ -188,14 +188,14 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
   // Forward differences of the exact gradient along the configuration directions give the q-q
   // block and the lambda-q block (columns k < nq), several columns per evaluation where their
   // entities share no contact (hessian_groups.h).
+  auto step = [x](int k) { return 1e-7 * std::max(1.0, std::abs(x[k])); };
   x_step_ = Eigen::Map<const Eigen::VectorXd>(x, n());
   for (const std::vector<int>& group : groups_.groups) {
-    for (int k : group) x_step_[k] += 1e-7 * std::max(1.0, std::abs(x[k]));
+    for (int k : group) x_step_[k] += step(k);
     state_.set_x(x_step_.data());
     lagrangian_gradient(obj_factor, y, grad_step_);
     for (int k : group) {
-      const double h = 1e-7 * std::max(1.0, std::abs(x[k]));
-      H_.col(k) = (grad_step_ - grad_) / h;
+      H_.col(k) = (grad_step_ - grad_) / step(k);
       x_step_[k] = x[k];
       if (group.size() == 1) continue;
       for (int i = 0; i < n(); ++i)
