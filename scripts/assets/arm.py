@@ -263,10 +263,6 @@ def build_platforms():
     return m, surfaces
 
 
-def surfaces_yaml(title, surfaces):
-    return g.surfaces_yaml(title, surfaces).replace("scripts/generate_assets.py", THIS)
-
-
 def readme_arm(m):
     rows = []
     for j in m.joints:
@@ -333,16 +329,16 @@ def main():
     g.verify_surfaces(env, env_surf)
     written = []
     g.write("robots/arm/arm.urdf", arm.urdf(), written)
-    g.write("robots/arm/arm.surfaces.yaml", surfaces_yaml("arm contact surfaces (link frames)", arm_surf), written)
+    g.write("robots/arm/arm.surfaces.yaml", g.surfaces_yaml("arm contact surfaces (link frames)", arm_surf, THIS), written)
     g.write("robots/arm/README.md", readme_arm(arm), written)
     g.write("objects/cylinder/cylinder.urdf", cylinder_urdf(), written)
     g.write("objects/cylinder/cylinder.obj", cylinder_obj(), written)
     g.write("objects/cylinder/cylinder.surfaces.yaml",
-            surfaces_yaml("cylinder contact surfaces (link frame)", cylinder_surfaces()), written)
+            g.surfaces_yaml("cylinder contact surfaces (link frame)", cylinder_surfaces(), THIS), written)
     g.write("objects/cylinder/README.md", readme_cylinder(), written)
     g.write("environments/two_platforms/two_platforms.urdf", env.urdf(), written)
     g.write("environments/two_platforms/two_platforms.surfaces.yaml",
-            surfaces_yaml("two_platforms contact surfaces", env_surf), written)
+            g.surfaces_yaml("two_platforms contact surfaces", env_surf, THIS), written)
     g.write("environments/two_platforms/README.md", readme_platforms(), written)
     for p in written:
         print("wrote", p)

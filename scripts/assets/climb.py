@@ -76,7 +76,7 @@ def main():
     written = []
     g.write("environments/climb_gap/climb_gap.urdf", env.urdf(), written)
     g.write("environments/climb_gap/climb_gap.surfaces.yaml",
-            g.surfaces_yaml("climb_gap contact surfaces", surfaces).replace("scripts/generate_assets.py", THIS),
+            g.surfaces_yaml("climb_gap contact surfaces", surfaces, THIS),
             written)
     g.write("environments/climb_gap/README.md", readme(), written)
     for p in written:

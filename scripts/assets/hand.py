@@ -464,16 +464,14 @@ def main():
     lines = checks(hand, hand_sur, ball, pen)
     written = []
     write("robots/hand/hand.urdf", hand.urdf(), written)
-    write("robots/hand/hand.surfaces.yaml", g.surfaces_yaml("hand contact surfaces (link frames)", hand_sur)
-          .replace("scripts/generate_assets.py", THIS), written)
+    write("robots/hand/hand.surfaces.yaml", g.surfaces_yaml("hand contact surfaces (link frames)", hand_sur, THIS), written)
     write("robots/hand/README.md", readme_hand(hand, hand_sur, lines), written)
     for name, files in (("ball", ball), ("pen", pen)):
         write(f"objects/{name}/{name}.urdf", files["urdf"], written)
         write(f"objects/{name}/{name}.obj", files["obj"], written)
         write(f"objects/{name}/{name}.mtl", files["mtl"], written)
         write(f"objects/{name}/{name}.surfaces.yaml",
-              g.surfaces_yaml(f"{name} contact surfaces (link frame)", files["surfaces"])
-              .replace("scripts/generate_assets.py", THIS), written)
+              g.surfaces_yaml(f"{name} contact surfaces (link frame)", files["surfaces"], THIS), written)
     write("objects/ball/README.md", readme_ball(), written)
     write("objects/pen/README.md", readme_pen(), written)
     for p in written:

@@ -90,7 +90,7 @@ def main():
     written = []
     g.write("objects/table/table.urdf", m.urdf(), written)
     g.write("objects/table/table.surfaces.yaml",
-            g.surfaces_yaml("table contact surfaces", surfaces).replace("scripts/generate_assets.py", THIS),
+            g.surfaces_yaml("table contact surfaces", surfaces, THIS),
             written)
     g.write("objects/table/README.md", readme(m), written)
     for p in written:
