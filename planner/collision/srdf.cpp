@@ -2,10 +2,9 @@
 
 #include <tinyxml.h>
 
-#include <fstream>
-#include <sstream>
 
 #include "planner/util/input_error.h"
+#include "planner/util/text_file.h"
 
 namespace stanceplan {
 namespace {
@@ -49,11 +48,7 @@ std::vector<DisabledCollision> parse_srdf_disabled_collisions(const std::string&
 }
 
 std::vector<DisabledCollision> load_srdf_disabled_collisions(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw InputError(path + ": cannot open the SRDF file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parse_srdf_disabled_collisions(text.str(), path);
+  return parse_srdf_disabled_collisions(read_text_file(path), path);
 }
 
 }  // namespace stanceplan

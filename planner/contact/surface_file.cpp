@@ -7,6 +7,7 @@
 #include <set>
 
 #include "planner/util/input_error.h"
+#include "planner/util/text_file.h"
 
 namespace stanceplan {
 namespace {
@@ -20,9 +21,7 @@ class SurfaceFileReader {
   std::vector<Surface> read() {
     YAML::Node root;
     try {
-      root = YAML::LoadFile(path_);
-    } catch (const YAML::BadFile&) {
-      throw InputError(path_ + ": cannot be read (no such file or no permission)");
+      root = YAML::Load(read_text_file(path_));
     } catch (const YAML::Exception& e) {
       throw InputError(path_ + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
     }

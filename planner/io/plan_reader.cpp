@@ -2,12 +2,11 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "planner/util/input_error.h"
+#include "planner/util/text_file.h"
 
 namespace stanceplan {
 namespace fs = std::filesystem;
@@ -60,12 +59,9 @@ class PlanReader {
 
  private:
   json load() const {
-    std::ifstream in(path_);
-    if (!in) throw InputError(path_ + ": cannot be read (no such file or no permission)");
-    std::stringstream text;
-    text << in.rdbuf();
+    const std::string text = read_text_file(path_);
     try {
-      return json::parse(text.str());
+      return json::parse(text);
     } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
       throw InputError(path_ + ": not valid JSON: " + e.what());
     }

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "planner/util/input_error.h"
+#include "planner/util/text_file.h"
 
 namespace stanceplan {
 namespace fs = std::filesystem;
@@ -62,9 +63,7 @@ class ScenarioReader {
  private:
   YAML::Node load() {
     try {
-      return YAML::LoadFile(path_);
-    } catch (const YAML::BadFile&) {
-      throw InputError(path_ + ": cannot be read (no such file or no permission)");
+      return YAML::Load(read_text_file(path_));
     } catch (const YAML::Exception& e) {
       throw InputError(path_ + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
     }

@@ -7,12 +7,12 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <sstream>
 
 #include "planner/util/input_error.h"
+#include "planner/util/text_file.h"
 
 namespace stanceplan {
 namespace fs = std::filesystem;
@@ -376,15 +376,9 @@ Model load_urdf_string(const std::string& xml, const std::string& base_dir,
 }
 
 Model load_urdf(const std::string& path, const UrdfOptions& options) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": no such file");
-  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot be opened for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  const std::string text = read_text_file(path);
   const std::string base_dir = fs::absolute(fs::path(path)).parent_path().string();
-  Model model = load_urdf_string(buffer.str(), base_dir, options, path);
+  Model model = load_urdf_string(text, base_dir, options, path);
   model.source_file = path;
   return model;
 }

@@ -19,27 +19,34 @@ class ScenarioFaults : public ::testing::Test {
  protected:
   std::string header() const {
     const std::string assets = test::source_path("assets");
-    return "format: stanceplan/scenario@1\n"                                         // 1
-           "entities:\n"                                                              // 2
-           "  - name: robot\n"                                                        // 3
-           "    kind: floating\n"                                                     // 4
-           "    urdf: " + assets + "/robots/humanoid/humanoid.urdf\n"                 // 5
-           "    surfaces: " + assets + "/robots/humanoid/humanoid.surfaces.yaml\n"    // 6
-           "    configuration:\n"                                                     // 7
-           "      base_position: [0, 0, 0.9]\n"                                       // 8
-           "      joints: {l_knee_p: 0.4}\n"                                          // 9
-           "  - name: env\n"                                                          // 10
-           "    kind: environment\n"                                                  // 11
-           "    urdf: " + assets + "/environments/flat_ground/flat_ground.urdf\n"     // 12
-           "    surfaces: " + assets + "/environments/flat_ground/flat_ground.surfaces.yaml\n";  // 13
+    return "format: stanceplan/scenario@1\n"  // 1
+           "entities:\n"                      // 2
+           "  - name: robot\n"                // 3
+           "    kind: floating\n"             // 4
+           "    urdf: " +
+           assets +
+           "/robots/humanoid/humanoid.urdf\n"  // 5
+           "    surfaces: " +
+           assets +
+           "/robots/humanoid/humanoid.surfaces.yaml\n"  // 6
+           "    configuration:\n"                       // 7
+           "      base_position: [0, 0, 0.9]\n"         // 8
+           "      joints: {l_knee_p: 0.4}\n"            // 9
+           "  - name: env\n"                            // 10
+           "    kind: environment\n"                    // 11
+           "    urdf: " +
+           assets +
+           "/environments/flat_ground/flat_ground.urdf\n"  // 12
+           "    surfaces: " +
+           assets + "/environments/flat_ground/flat_ground.surfaces.yaml\n";  // 13
   }
   std::string stances() const {
-    return "stances:\n"                                   // 14
-           "  initial:\n"                                 // 15
-           "    - {s1: robot/l_sole, s2: env/floor}\n"    // 16
-           "    - {s1: robot/r_sole, s2: env/floor}\n"    // 17
-           "  goal:\n"                                    // 18
-           "    - {s1: robot/l_sole, s2: env/floor}\n";   // 19
+    return "stances:\n"                                  // 14
+           "  initial:\n"                                // 15
+           "    - {s1: robot/l_sole, s2: env/floor}\n"   // 16
+           "    - {s1: robot/r_sole, s2: env/floor}\n"   // 17
+           "  goal:\n"                                   // 18
+           "    - {s1: robot/l_sole, s2: env/floor}\n";  // 19
   }
   void SetUp() override {
     const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
@@ -62,7 +69,9 @@ class ScenarioFaults : public ::testing::Test {
 };
 
 TEST_F(ScenarioFaults, AValidScenarioLoads) {
-  const Scenario s = load_scenario(write(header() + stances() + "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    tolerance: 0.05\n"));
+  const Scenario s = load_scenario(
+      write(header() + stances() +
+            "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    tolerance: 0.05\n"));
   EXPECT_EQ(s.scene.system.num_entities(), 2);
   EXPECT_EQ(s.initial_stance.size(), 2u);
   EXPECT_EQ(s.goal_stance.size(), 1u);
@@ -72,54 +81,71 @@ TEST_F(ScenarioFaults, AValidScenarioLoads) {
   EXPECT_EQ(s.milestone_masks[0].sum(), 3.0);  // only the base position is stated
   const Model& m = *s.scene.system.entity(0).model;
   EXPECT_NEAR(s.initial_configuration[7 + m.find_dof("l_knee_p")], 0.4, 1e-12);
-  EXPECT_NEAR(s.milestones[0][7 + m.find_dof("l_knee_p")], 0.4, 1e-12);  // completed from the initial one
+  EXPECT_NEAR(s.milestones[0][7 + m.find_dof("l_knee_p")], 0.4,
+              1e-12);  // completed from the initial one
 }
 
 TEST_F(ScenarioFaults, AMilestoneStatesTheContactsOfferedWhileItIsTheTarget) {
-  const Scenario s = load_scenario(write(header() + stances() +
-                                         "guide:\n"
-                                         "  - robot: {base_position: [0.3, 0, 0.9]}\n"
-                                         "    contacts: [[robot/*_sole, env/floor], [robot/l_hand, env/*]]\n"
-                                         "  - robot: {base_position: [0.6, 0, 0.9]}\n"));
+  const Scenario s =
+      load_scenario(write(header() + stances() +
+                          "guide:\n"
+                          "  - robot: {base_position: [0.3, 0, 0.9]}\n"
+                          "    contacts: [[robot/*_sole, env/floor], [robot/l_hand, env/*]]\n"
+                          "  - robot: {base_position: [0.6, 0, 0.9]}\n"));
   ASSERT_EQ(s.milestone_contact_pairs.size(), 2u);
   using Pairs = std::vector<std::pair<std::string, std::string>>;
-  EXPECT_EQ(s.milestone_contact_pairs[0], (Pairs{{"robot/*_sole", "env/floor"}, {"robot/l_hand", "env/*"}}));
+  EXPECT_EQ(s.milestone_contact_pairs[0],
+            (Pairs{{"robot/*_sole", "env/floor"}, {"robot/l_hand", "env/*"}}));
   EXPECT_TRUE(s.milestone_contact_pairs[1].empty());  // the search's contact_pairs apply
-  EXPECT_EQ(error_of(header() + stances() + "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    contacts: [robot/l_sole]\n"),
-            path_ + ":22: guide[0].contacts[0]: expected [s1 pattern, s2 pattern]");
-  EXPECT_EQ(error_of(header() + stances() + "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    contacts: robot/l_sole\n"),
-            path_ + ":22: guide[0].contacts: expected a list of [s1 pattern, s2 pattern]");
+  EXPECT_EQ(
+      error_of(header() + stances() +
+               "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    contacts: [robot/l_sole]\n"),
+      path_ + ":22: guide[0].contacts[0]: expected [s1 pattern, s2 pattern]");
+  EXPECT_EQ(
+      error_of(header() + stances() +
+               "guide:\n  - robot: {base_position: [0.3, 0, 0.9]}\n    contacts: robot/l_sole\n"),
+      path_ + ":22: guide[0].contacts: expected a list of [s1 pattern, s2 pattern]");
 }
 
 TEST_F(ScenarioFaults, AnUnknownSurfaceIsNamedWithLineAndField) {
   std::string text = header() + stances();
   text.replace(text.find("s1: robot/r_sole, s2: env/floor"), 31, "s1: robot/r_sole, s2: env/flor");
-  EXPECT_EQ(error_of(text), path_ + ":17: stances.initial[1].s2: no surface \"env/flor\" (entity \"env\" has: floor)");
+  EXPECT_EQ(
+      error_of(text),
+      path_ + ":17: stances.initial[1].s2: no surface \"env/flor\" (entity \"env\" has: floor)");
 }
 
 TEST_F(ScenarioFaults, AMisspeltFieldIsAnError) {
   EXPECT_EQ(error_of(header() + stances() + "colision:\n  margin: 0.01\n"),
-            path_ + ":20: colision: unknown field (expected one of: format, name, description, entities, stances, "
-                    "guide, physics, weights, collision, search, solver)");
+            path_ +
+                ":20: colision: unknown field (expected one of: format, name, description, "
+                "entities, stances, "
+                "guide, physics, weights, collision, search, solver)");
 }
 
 TEST_F(ScenarioFaults, AJointOutsideItsLimitsIsNamed) {
   std::string text = header() + stances();
   text.replace(text.find("{l_knee_p: 0.4}"), 15, "{l_knee_p: 3.0}");
-  EXPECT_EQ(error_of(text), path_ + ":9: entities[0].configuration.joints.l_knee_p: 3.000000 is outside the joint's "
-                                    "limits [0.000000, 2.500000]");
+  EXPECT_EQ(error_of(text),
+            path_ +
+                ":9: entities[0].configuration.joints.l_knee_p: 3.000000 is outside the joint's "
+                "limits [0.000000, 2.500000]");
 }
 
 TEST_F(ScenarioFaults, AnUnknownJointIsNamed) {
   std::string text = header() + stances();
   text.replace(text.find("{l_knee_p: 0.4}"), 15, "{l_knee: 0.4}");
-  EXPECT_EQ(error_of(text), path_ + ":9: entities[0].configuration.joints.l_knee: model \"humanoid\" has no joint \"l_knee\"");
+  EXPECT_EQ(error_of(text), path_ +
+                                ":9: entities[0].configuration.joints.l_knee: model \"humanoid\" "
+                                "has no joint \"l_knee\"");
 }
 
 TEST_F(ScenarioFaults, WrongKindsAndNumbersAreNamed) {
   std::string text = header() + stances();
   text.replace(text.find("kind: floating"), 14, "kind: flying");
-  EXPECT_EQ(error_of(text), path_ + ":4: entities[0].kind: expected floating, fixed, object or environment, found \"flying\"");
+  EXPECT_EQ(error_of(text), path_ +
+                                ":4: entities[0].kind: expected floating, fixed, object or "
+                                "environment, found \"flying\"");
   EXPECT_EQ(error_of(header() + stances() + "physics:\n  friction: lots\n"),
             path_ + ":21: physics.friction: expected a number, found \"lots\"");
   EXPECT_EQ(error_of(header() + stances() + "physics:\n  friction: -1\n"),
@@ -141,19 +167,39 @@ TEST_F(ScenarioFaults, MissingSectionsAndFiles) {
   std::string text = header() + stances();
   text.replace(text.find("humanoid.urdf"), 13, "humanoid_missing.urdf");
   EXPECT_THAT(error_of(text), HasSubstr("humanoid_missing.urdf: no such file"));
-  EXPECT_EQ(error_of("format: stanceplan/plan@1\n"), path_ + ":1: format: expected \"stanceplan/scenario@1\", found \"stanceplan/plan@1\"");
+  EXPECT_EQ(error_of("format: stanceplan/plan@1\n"),
+            path_ + ":1: format: expected \"stanceplan/scenario@1\", found \"stanceplan/plan@1\"");
   try {
     load_scenario("/nonexistent/s.yaml");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/s.yaml: cannot be read (no such file or no permission)");
+    EXPECT_STREQ(e.what(), "/nonexistent/s.yaml: no such file");
+  }
+}
+
+// The fuzzer's find: a folder where a file was expected used to abort inside the YAML parser.
+TEST_F(ScenarioFaults, AFolderWhereAFileWasExpectedIsNamed) {
+  std::string text = header() + stances();
+  const std::string surfaces = "/robots/humanoid/humanoid.surfaces.yaml";
+  const std::size_t at = text.find(surfaces);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, surfaces.size(), "/robots/humanoid");
+  EXPECT_THAT(error_of(text), HasSubstr("/robots/humanoid: not a regular file (a folder?)"));
+  const std::string folder = test::temp_dir("scenario_folder").string();
+  try {
+    load_scenario(folder);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), folder + ": not a regular file (a folder?)");
   }
 }
 
 TEST_F(ScenarioFaults, ASurfaceTwiceInAStanceIsRejected) {
   std::string text = header() + stances();
   text.replace(text.find("s1: robot/r_sole, s2: env/floor"), 31, "s1: robot/l_sole, s2: env/floor");
-  EXPECT_EQ(error_of(text), path_ + ":17: stances.initial[1].s1: surface \"robot/l_sole\" is already in a contact of this stance");
+  EXPECT_EQ(error_of(text), path_ +
+                                ":17: stances.initial[1].s1: surface \"robot/l_sole\" is already "
+                                "in a contact of this stance");
 }
 
 }  // namespace
