@@ -1,49 +1,47 @@
 #pragma once
 // Which configuration columns of the finite-difference Hessian (PostureNlp::hessian_values) can be
-// perturbed together. Entities that share no contact task share no second derivative: a robot's
-// configuration does not move the gradient rows of another robot it does not touch, nor the force
-// rows of contacts it is not part of. So one gradient evaluation can difference a column of each
-// of several entities at once when no two of them share a contact (a colouring of the contact
-// graph): two robots carrying a table, two arms handing over a cylinder. A column then reads only
-// the rows its own entity alone moves in that evaluation; an entry between two touching entities
-// that neither column can read alone comes from the other column by symmetry. Single-entity
-// systems keep one column per evaluation.
-#include <cstdint>
+// perturbed together, and which entries can be nonzero at all.
+//
+// Most second derivatives of the program are structurally zero: a joint of the left arm and a
+// joint of the right leg share no term (every constraint row and objective term is a sum of
+// per-link terms, each a function of the joints on that link's path to the root; collision rows
+// get no curvature), nor do two robots that do not touch. `pattern` records, for every q column k,
+// which rows of the Lagrangian's gradient move when q_k moves; PostureNlp measures it once per
+// program (a gradient evaluation per column at a generic point: a row that does not read q_k
+// comes out bit for bit the same). Columns whose moved rows do not overlap are then differenced
+// by one gradient evaluation (a colouring, as in Curtis, Powell & Reid 1974 and its symmetric
+// variant by Coleman & Moré 1984): an entry is read from its column when no other column of the
+// group moves its row, or else, in the q-q block, from its mirror entry. Ipopt is told only the
+// entries the pattern allows, which keeps its KKT matrix sparse.
+#include <cstddef>
 #include <vector>
-
-#include "planner/solver/nlp_layout.h"
-#include "planner/solver/nlp_state.h"
 
 namespace stanceplan {
 
 struct HessianGroups {
+  int n = 0;                             // rows: all variables (q, lambda)
+  int nq = 0;                            // differenced columns: q
+  std::vector<char> pattern;             // n x nq, column-major; q-q part symmetric, diagonal set
   std::vector<std::vector<int>> groups;  // q columns differenced by one gradient evaluation
   std::vector<int> group_of_column;      // per q column
-  std::vector<int> entity_of_column;     // per q column
-  std::vector<uint64_t> group_entities;  // per group: bit e for each entity among its columns
-  std::vector<uint64_t> row_entities;    // per row of the Hessian (n): entities whose q moves it
+  std::vector<int> count;                // groups x n: columns of the group that move the row
 
-  bool shared(int column) const {
-    return groups[size_t(group_of_column[size_t(column)])].size() > 1;
+  bool nonzero(int row, int column) const {
+    return pattern[std::size_t(column) * std::size_t(n) + std::size_t(row)] != 0;
   }
-  // The row does not depend on the column's entity: the entry is zero.
-  bool structural_zero(int row, int column) const {
-    return (row_entities[size_t(row)] & bit(entity_of_column[size_t(column)])) == 0;
-  }
-  // The column's evaluation moved the row through the column's entity alone.
+  // The column's evaluation moved the row through that column alone.
   bool readable(int row, int column) const {
-    const uint64_t mine = bit(entity_of_column[size_t(column)]);
-    return !shared(column) || (row_entities[size_t(row)] &
-                               group_entities[size_t(group_of_column[size_t(column)])]) == mine;
+    return nonzero(row, column) &&
+           count[std::size_t(group_of_column[std::size_t(column)]) * std::size_t(n) +
+                 std::size_t(row)] == 1;
   }
-  static uint64_t bit(int entity) { return uint64_t{1} << entity; }
+  // Entry (i, j) of the Hessian (i >= j, j < nq) can be nonzero.
+  bool needed(int i, int j) const { return nonzero(i, j) || (i < nq && nonzero(j, i)); }
 };
 
-// Greedy colouring of the entities with configuration in entity order (deterministic). Falls back
-// to one column per group when a needed entry could be read from neither side, or with more than
-// 64 entities.
-HessianGroups make_hessian_groups(const System& system,
-                                  const std::vector<ContactConstants>& contacts,
-                                  const NlpLayout& layout);
+// Greedy colouring in column order (deterministic). `pattern` (n x nq, column-major) is made
+// symmetric in its q-q part and given its diagonal. Every entry the pattern allows is readable
+// from its column, or (q-q) from its mirror's.
+HessianGroups make_hessian_groups(std::vector<char> pattern, int n, int nq);
 
 }  // namespace stanceplan

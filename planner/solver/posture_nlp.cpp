@@ -9,8 +9,10 @@ namespace stanceplan {
 
 PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
                        const SolverOptions& options, std::vector<int> active_pairs,
-                       std::vector<double> pair_bounds)
-    : layout_(scene, request, options), state_(scene, request, options, layout_), objective_(state_) {
+                       std::vector<double> pair_bounds, HessianCache* hessian_cache)
+    : layout_(scene, request, options),
+      state_(scene, request, options, layout_),
+      objective_(state_) {
   const System& system = scene.system;
   auto add = [&](std::unique_ptr<ConstraintBlock> block) {
     if (block->rows() > 0) blocks_.push_back(std::move(block));
@@ -24,10 +26,12 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
     const Entity& entity = system.entity(e);
     if (entity.floating() && entity.model->total_mass > 0.0)
       add(std::make_unique<EquilibriumBlock>(state_, e));
-    if (options.enforce_torque_limits && entity.kind != EntityKind::Object && entity.model->num_dofs() > 0)
+    if (options.enforce_torque_limits && entity.kind != EntityKind::Object &&
+        entity.model->num_dofs() > 0)
       add(std::make_unique<TorqueLimitBlock>(state_, e));
   }
-  if (pair_bounds.size() != active_pairs.size()) pair_bounds.assign(active_pairs.size(), options.collision_margin);
+  if (pair_bounds.size() != active_pairs.size())
+    pair_bounds.assign(active_pairs.size(), options.collision_margin);
   if (scene.collision && options.enforce_collisions && !active_pairs.empty())
     add(std::make_unique<CollisionBlock>(state_, std::move(active_pairs), std::move(pair_bounds)));
   std::vector<int> columns;
@@ -44,12 +48,38 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
     }
     m_ += block->rows();
   }
-  groups_ = make_hessian_groups(system, state_.constants, layout_);
   J_.setZero(m_, layout_.n);
   H_.setZero(layout_.n, layout_.n);
   grad_.setZero(layout_.n);
   grad_step_.setZero(layout_.n);
   x_step_.setZero(layout_.n);
+  make_starting_point();
+  if (options.hessian != HessianMode::FiniteDifference) return;
+  const HessianCache::Key key = hessian_key();
+  if (hessian_cache) hessian_ = hessian_cache->find(key);
+  if (hessian_) return;
+  hessian_ = measure_hessian_structure();
+  if (hessian_cache) hessian_cache->insert(key, hessian_);
+}
+
+// Everything the Hessian's structure depends on: the variables, the contacts and how each enters
+// the program, the non-collision rows and their columns, and the objective's torque term.
+HessianCache::Key PostureNlp::hessian_key() const {
+  HessianCache::Key key = {n(), layout_.nq, state_.options.w_torque > 0.0 ? 1 : 0};
+  for (const ContactTask& task : state_.request.contacts) {
+    const Contact& c = task.contact;
+    key.insert(key.end(),
+               {c.s1.entity, c.s1.index, c.s2.entity, c.s2.index, c.bilateral ? 1 : 0,
+                task.loaded ? 1 : 0, task.placement ? 1 : 0, task.placement_target ? 1 : 0});
+  }
+  int smooth_rows = m_;  // the collision block, when there is one, comes last
+  if (!blocks_.empty() && blocks_.back()->family() == "collision") smooth_rows = first_row_.back();
+  key.push_back(smooth_rows);
+  for (size_t k = 0; k < rows_.size() && rows_[k] < smooth_rows; ++k) {
+    key.push_back(rows_[k]);
+    key.push_back(cols_[k]);
+  }
+  return key;
 }
 
 void PostureNlp::variable_bounds(double* lower, double* upper) const {
@@ -87,25 +117,31 @@ void PostureNlp::structure(int* rows, int* cols) const {
 }
 
 void PostureNlp::starting_point(double* x) const {
+  std::copy(x0_.data(), x0_.data() + n(), x);
+}
+
+// The request's configuration, and an even share of the weight of every floating body over the
+// loaded vertices, as an interior point (lambda > 0) of the cone coefficients. (Measured with
+// bench/solver_bench: starting instead from the least change of these forces that balances the
+// bodies at q_init (E16-E17) took more iterations, 6/14/12 instead of 7/11/10 for 2/3/4
+// contacts warm started: Ipopt's first steps then grow the forces far from there.)
+void PostureNlp::make_starting_point() {
   const PostureRequest& request = state_.request;
-  Eigen::Map<Eigen::VectorXd> out(x, n());
-  out.head(layout_.nq) = request.q_init;
-  // Forces: share the weight of every floating body evenly over the loaded vertices, as an
-  // interior point (lambda > 0) of the cone coefficients.
+  x0_.resize(n());
+  x0_.head(layout_.nq) = request.q_init;
   double weight = 0.0;
   for (const Entity& e : state_.scene.system.entities())
     if (e.floating()) weight += e.model->total_mass * state_.scene.gravity.norm();
   int vertices = 0;
   for (const ForceBlock& block : layout_.forces) vertices += block.num_vertices;
   const double per_vertex = vertices > 0 ? weight / vertices : 0.0;
+  const double cos_half = 1.0 / std::sqrt(1.0 + state_.options.friction * state_.options.friction);
   for (const ForceBlock& block : layout_.forces) {
-    auto lambda = out.segment(block.first_column, block.size());
-    if (block.bilateral) {
+    auto lambda = x0_.segment(block.first_column, block.size());
+    if (block.bilateral)
       lambda.setZero();
-    } else {
-      const double cos_half = 1.0 / std::sqrt(1.0 + state_.options.friction * state_.options.friction);
+    else
       lambda.setConstant(std::max(per_vertex / (block.per_vertex * cos_half), 1e-3));
-    }
   }
 }
 
@@ -127,7 +163,8 @@ void PostureNlp::objective_gradient(const double* x, bool new_x, double* grad) {
 void PostureNlp::constraints(const double* x, bool new_x, double* g) {
   update(x, new_x);
   for (size_t b = 0; b < blocks_.size(); ++b)
-    blocks_[b]->evaluate(state_, Eigen::Map<Eigen::VectorXd>(g + first_row_[b], blocks_[b]->rows()));
+    blocks_[b]->evaluate(state_,
+                         Eigen::Map<Eigen::VectorXd>(g + first_row_[b], blocks_[b]->rows()));
 }
 
 const Eigen::MatrixXd& PostureNlp::dense_jacobian(const double* x, bool new_x) {
@@ -148,16 +185,17 @@ void PostureNlp::jacobian_values(const double* x, bool new_x, double* values) {
 namespace stanceplan {
 
 void PostureNlp::hessian_structure(int* rows, int* cols) const {
-  int k = 0;
-  for (int i = 0; i < n(); ++i)
-    for (int j = 0; j <= i; ++j) {
-      rows[k] = i;
-      cols[k] = j;
-      ++k;
-    }
+  std::copy(hessian_->rows.begin(), hessian_->rows.end(), rows);
+  std::copy(hessian_->cols.begin(), hessian_->cols.end(), cols);
 }
 
 void PostureNlp::lagrangian_gradient(double obj_factor, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                     Eigen::Ref<Eigen::VectorXd> out) {
+  lagrangian_gradient(state_, obj_factor, y, out);
+}
+
+void PostureNlp::lagrangian_gradient(NlpState& state, double obj_factor,
+                                     const Eigen::Ref<const Eigen::VectorXd>& y,
                                      Eigen::Ref<Eigen::VectorXd> out) {
   // Signed distance is only piecewise smooth (its witness features jump, e.g. between parallel
   // faces): differencing its gradient gives meaningless curvature, so collision rows are given
@@ -165,15 +203,96 @@ void PostureNlp::lagrangian_gradient(double obj_factor, const Eigen::Ref<const E
   J_.setZero();
   for (size_t b = 0; b < blocks_.size(); ++b)
     if (blocks_[b]->family() != "collision")
-      blocks_[b]->jacobian(state_, J_.middleRows(first_row_[b], blocks_[b]->rows()));
-  objective_.gradient(state_, out);
+      blocks_[b]->jacobian(state, J_.middleRows(first_row_[b], blocks_[b]->rows()));
+  objective_.gradient(state, out);
   out *= obj_factor;
   out.noalias() += J_.transpose() * y;
 }
 
-double PostureNlp::symmetric_entry(int i, int j) const {
-  const bool ij = groups_.readable(i, j) || groups_.structural_zero(i, j);
-  const bool ji = groups_.readable(j, i) || groups_.structural_zero(j, i);
+// A generic point: every joint off its neutral value by a different amount (inside its limits),
+// every force coefficient and multiplier nonzero, so that no dependence hides behind a zero factor.
+void PostureNlp::probe_point(Eigen::VectorXd* x, Eigen::VectorXd* y) const {
+  std::vector<double> lower(static_cast<size_t>(n())), upper(static_cast<size_t>(n()));
+  variable_bounds(lower.data(), upper.data());
+  const int nq = layout_.nq;
+  x->resize(n());
+  x->head(nq) = state_.scene.system.neutral_configuration();
+  for (int k = 0; k < nq; ++k) {
+    const double moved = (*x)[k] + 0.05 + 0.01 * (k % 7);
+    const double room = 0.1 * (upper[size_t(k)] - lower[size_t(k)]);
+    (*x)[k] = std::clamp(moved, lower[size_t(k)] + room, upper[size_t(k)] - room);
+  }
+  for (int i = nq; i < n(); ++i) (*x)[i] = 1.0 + 0.1 * (i % 5);
+  y->resize(m_);
+  for (int r = 0; r < m_; ++r) (*y)[r] = (r % 2 ? -1.0 : 1.0) * (1.0 + 0.1 * (r % 3));
+}
+
+// The request with its values replaced by generic ones (same contacts, same shape): the structure
+// then depends on the shape alone, so that HessianCache returns what measuring would (a placement
+// angle of exactly 0 would hide a dependence and make the cached structure depend on which request
+// came first).
+PostureRequest PostureNlp::generic_request(const Eigen::VectorXd& q) const {
+  PostureRequest generic = state_.request;
+  generic.q_init = q;
+  generic.q_ref = q;
+  for (int k = 0; k < q.size(); ++k) generic.q_ref[k] += 0.003 * (1 + k % 5);
+  for (ContactTask& task : generic.contacts) {
+    if (task.placement) *task.placement = {0.011, -0.013, 0.017};
+    if (task.placement_target) *task.placement_target = {0.019, 0.007, -0.023};
+  }
+  return generic;
+}
+
+std::shared_ptr<const HessianStructure> PostureNlp::measure_hessian_structure() {
+  const int nq = layout_.nq, nl = n() - nq;
+  Eigen::VectorXd x, y;
+  probe_point(&x, &y);
+  const PostureRequest request = generic_request(x.head(nq));
+  NlpState state(state_.scene, request, state_.options, layout_);
+  state.set_x(x.data());
+  lagrangian_gradient(state, 1.0, y, grad_);
+  std::vector<char> pattern(size_t(n()) * size_t(nq), 0);
+  for (int k = 0; k < nq; ++k) {
+    x_step_ = x;
+    x_step_[k] += 1e-3;
+    state.set_x(x_step_.data());
+    lagrangian_gradient(state, 1.0, y, grad_step_);
+    for (int i = 0; i < n(); ++i)
+      pattern[size_t(k) * size_t(n()) + size_t(i)] = grad_step_[i] != grad_[i];
+  }
+  auto structure = std::make_shared<HessianStructure>();
+  structure->groups = make_hessian_groups(std::move(pattern), n(), nq);
+  // lambda-lambda: 2 w_force I + 2 w_torque (dtau/dlambda)^T (dtau/dlambda) (see hessian_values).
+  std::vector<char>& forces = structure->force_pattern;
+  forces.assign(size_t(nl) * size_t(nl), 0);
+  for (int a = 0; a < nl; ++a) forces[size_t(a) * size_t(nl) + size_t(a)] = 1;
+  if (state.options.w_torque > 0.0 && nl > 0) {
+    state.set_x(x.data());
+    state.ensure_torques();
+    for (const Eigen::MatrixXd& D : state.dtau_dx)
+      for (int r = 0; r < D.rows(); ++r)
+        for (int a = 0; a < nl; ++a)
+          if (D(r, nq + a) != 0.0)
+            for (int b = 0; b < nl; ++b)
+              if (D(r, nq + b) != 0.0) forces[size_t(a) * size_t(nl) + size_t(b)] = 1;
+  }
+  for (int i = 0; i < n(); ++i)
+    for (int j = 0; j <= i; ++j) {
+      const bool entry = j < nq ? structure->groups.needed(i, j)
+                                : forces[size_t(i - nq) * size_t(nl) + size_t(j - nq)] != 0;
+      if (!entry) continue;
+      structure->rows.push_back(i);
+      structure->cols.push_back(j);
+    }
+  return structure;
+}
+
+// Entry (i, j) of the differenced columns (j < nq): from column j, or in the q-q block from
+// column i, or the mean of both when both read it.
+double PostureNlp::differenced_entry(int i, int j) const {
+  const HessianGroups& groups = hessian_->groups;
+  const bool ij = groups.readable(i, j);
+  const bool ji = i < layout_.nq && groups.readable(j, i);
   if (ij && ji) return 0.5 * (H_(i, j) + H_(j, i));
   return ij ? H_(i, j) : H_(j, i);  // make_hessian_groups guarantees one side
 }
@@ -184,22 +303,18 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
   const Eigen::Map<const Eigen::VectorXd> y(y_in, m_);
   const int nq = layout_.nq;
   lagrangian_gradient(obj_factor, y, grad_);
-  H_.setZero();
   // Forward differences of the exact gradient along the configuration directions give the q-q
-  // block and the lambda-q block (columns k < nq), several columns per evaluation where their
-  // entities share no contact (hessian_groups.h).
+  // block and the lambda-q block (columns k < nq), several columns per evaluation where they move
+  // different rows (hessian_groups.h).
   auto step = [x](int k) { return 1e-7 * std::max(1.0, std::abs(x[k])); };
   x_step_ = Eigen::Map<const Eigen::VectorXd>(x, n());
-  for (const std::vector<int>& group : groups_.groups) {
+  for (const std::vector<int>& group : hessian_->groups.groups) {
     for (int k : group) x_step_[k] += step(k);
     state_.set_x(x_step_.data());
     lagrangian_gradient(obj_factor, y, grad_step_);
     for (int k : group) {
       H_.col(k) = (grad_step_ - grad_) / step(k);
       x_step_[k] = x[k];
-      if (group.size() == 1) continue;
-      for (int i = 0; i < n(); ++i)
-        if (groups_.structural_zero(i, k)) H_(i, k) = 0.0;
     }
   }
   state_.set_x(x);  // later calls with new_x = false expect the state at x
@@ -209,20 +324,20 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
   const int nl = n() - nq;
   if (nl > 0) {
     auto Hll = H_.bottomRightCorner(nl, nl);
+    Hll.setZero();
     Hll.diagonal().array() += obj_factor * 2.0 * o.w_force;
     if (o.w_torque > 0.0) {
       state_.ensure_torques();
       for (const Eigen::MatrixXd& D : state_.dtau_dx)
-        if (D.size() > 0) Hll.noalias() += obj_factor * 2.0 * o.w_torque * D.rightCols(nl).transpose() * D.rightCols(nl);
+        if (D.size() > 0)
+          Hll.noalias() +=
+              obj_factor * 2.0 * o.w_torque * D.rightCols(nl).transpose() * D.rightCols(nl);
     }
   }
-  int k = 0;
-  for (int i = 0; i < n(); ++i)
-    for (int j = 0; j <= i; ++j) {
-      // Symmetrise the differenced q-q block; below it, column j < nq of row i >= nq is d/dq_j of
-      // the lambda-gradient, exact up to the difference error.
-      values[k++] = (i < nq) ? symmetric_entry(i, j) : H_(i, j);
-    }
+  for (size_t k = 0; k < hessian_->rows.size(); ++k) {
+    const int i = hessian_->rows[k], j = hessian_->cols[k];
+    values[k] = j < nq ? differenced_entry(i, j) : H_(i, j);
+  }
 }
 
 }  // namespace stanceplan

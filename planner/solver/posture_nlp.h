@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "planner/solver/constraint_block.h"
-#include "planner/solver/hessian_groups.h"
+#include "planner/solver/hessian_cache.h"
 #include "planner/solver/objective.h"
 
 namespace stanceplan {
@@ -16,7 +16,8 @@ class PostureNlp {
   // active_pairs: indices into scene.collision->pairs() that enter the program (E20), with the
   // least distance each must keep (default: options.collision_margin).
   PostureNlp(const Scene& scene, const PostureRequest& request, const SolverOptions& options,
-             std::vector<int> active_pairs, std::vector<double> pair_bounds = {});
+             std::vector<int> active_pairs, std::vector<double> pair_bounds = {},
+             HessianCache* hessian_cache = nullptr);
 
   int n() const { return layout_.n; }
   int m() const { return m_; }
@@ -36,11 +37,13 @@ class PostureNlp {
   void objective_gradient(const double* x, bool new_x, double* grad);
   void constraints(const double* x, bool new_x, double* g);
   void jacobian_values(const double* x, bool new_x, double* values);
-  // Hessian of the Lagrangian obj_factor f + y^T g, lower triangle, dense over (q, lambda) in
-  // row-major order of (i >= j). See HessianMode::FiniteDifference.
-  int hessian_nnz() const { return n() * (n() + 1) / 2; }
+  // Hessian of the Lagrangian obj_factor f + y^T g, lower triangle (i >= j), the entries that
+  // can be nonzero (hessian_groups.h) in row-major order. See HessianMode::FiniteDifference.
+  int hessian_nnz() const { return hessian_ ? static_cast<int>(hessian_->rows.size()) : 0; }
+  const HessianGroups& hessian_groups() const { return hessian_->groups; }
   void hessian_structure(int* rows, int* cols) const;
-  void hessian_values(const double* x, bool new_x, double obj_factor, const double* y, double* values);
+  void hessian_values(const double* x, bool new_x, double obj_factor, const double* y,
+                      double* values);
   // The dense Jacobian (m x n), for tests.
   const Eigen::MatrixXd& dense_jacobian(const double* x, bool new_x);
 
@@ -57,11 +60,19 @@ class PostureNlp {
   // Gradient of the Lagrangian at the state's current x.
   void lagrangian_gradient(double obj_factor, const Eigen::Ref<const Eigen::VectorXd>& y,
                            Eigen::Ref<Eigen::VectorXd> out);
+  void lagrangian_gradient(NlpState& state, double obj_factor,
+                           const Eigen::Ref<const Eigen::VectorXd>& y,
+                           Eigen::Ref<Eigen::VectorXd> out);
+  PostureRequest generic_request(const Eigen::VectorXd& q) const;
 
-  // Entry (i, j) of the q-q block from the differenced columns i and j (either or both).
-  double symmetric_entry(int i, int j) const;
+  void make_starting_point();
+  void probe_point(Eigen::VectorXd* x, Eigen::VectorXd* y) const;
+  std::shared_ptr<const HessianStructure> measure_hessian_structure();
+  HessianCache::Key hessian_key() const;
+  double differenced_entry(int i, int j) const;
 
-  HessianGroups groups_;
+  std::shared_ptr<const HessianStructure> hessian_;
+  Eigen::VectorXd x0_;  // the starting point
   Eigen::MatrixXd J_;
   Eigen::MatrixXd H_;
   Eigen::VectorXd grad_, grad_step_, x_step_;

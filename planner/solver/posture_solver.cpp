@@ -244,7 +244,7 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
     return bounds;
   };
   for (int round = 0;; ++round) {
-    PostureNlp nlp(scene_, request, options, active, bounds_of(active));
+    PostureNlp nlp(scene_, request, options, active, bounds_of(active), hessian_cache_.get());
     const IpoptRun run = run_ipopt(nlp, options);
     result.iterations += run.iterations;
     result.status = run.status;

@@ -2,9 +2,11 @@
 // The inverse-kinematics-and-statics solver of METHOD.md section 4: one nonlinear program over
 // (q, lambda) per call, solved by Ipopt with exact first derivatives. Thread-safe: solve() may be
 // called from several threads (Ipopt itself is serialised inside the adapter).
+#include <memory>
 #include <vector>
 
 #include "planner/scene/scene.h"
+#include "planner/solver/hessian_cache.h"
 #include "planner/solver/posture_request.h"
 #include "planner/solver/posture_result.h"
 
@@ -34,6 +36,7 @@ class PostureSolver {
 
   const Scene& scene_;
   SolverOptions options_;
+  std::shared_ptr<HessianCache> hessian_cache_ = std::make_shared<HessianCache>();
 };
 
 // The realised placement of s1 in s2's frame at configuration q (E10-E13 read backwards).
