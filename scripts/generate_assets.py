@@ -615,7 +615,8 @@ def surfaces_yaml(title, surfaces, generator="scripts/generate_assets.py"):
 
 FLOOR = dict(size=(8.0, 6.0, 0.05), center_xy=(1.5, 0.0))   # x -2.5..5.5, y -3..3, top at z = 0
 DESK = dict(x=2.35, top=0.78, board=(0.70, 1.20, 0.03), leg=0.05, leg_inset=0.03)
-CHAIR = dict(x=1.52, seat_top=0.42, seat=(0.45, 0.45, 0.04), leg=0.035, back=(0.03, 0.43))
+CHAIR = dict(x=1.52, seat_top=0.42, seat=(0.45, 0.45, 0.04), leg=0.035, back=(0.03, 0.43),
+             leg_inset_x=0.06)  # legs set back from the seat's front/back edges: room for heels under the seat
 WALL = dict(x=0.60, size=(0.10, 3.0, 2.0))
 DENSITY = dict(floor=1000.0, wood=600.0, wall=1500.0)
 
@@ -667,7 +668,7 @@ def build_desk_room():
     boxes = [((cx, cy, ct), (0.0, 0.0, st - ct / 2.0), "wood", "chair_seat"),
              ((bth, cy, bh), (-cx / 2 + bth / 2, 0.0, st + bh / 2.0), "wood", "chair_back")]
     for i, (px, py) in enumerate(((1, 1), (1, -1), (-1, -1), (-1, 1))):
-        boxes.append(((leg, leg, leg_h), (px * (cx / 2 - leg / 2), py * (cy / 2 - leg / 2), leg_h / 2.0),
+        boxes.append(((leg, leg, leg_h), (px * (cx / 2 - CHAIR["leg_inset_x"] - leg / 2), py * (cy / 2 - leg / 2), leg_h / 2.0),
                       "wood_dark", f"chair_leg_{i}"))
     m.add_link(env_box_link("chair", boxes, DENSITY["wood"],
                             "chair facing +x; collision box 0 is the seat, box 1 the backrest"))
@@ -1039,7 +1040,8 @@ def readme(m, hum_surfaces, envs, report):
         f"top face at z = {fnum(CHAIR['seat_top'])} m, centred at x = {fnum(CHAIR['x'])} m (x "
         f"{fnum(CHAIR['x'] - CHAIR['seat'][0] / 2)} to {fnum(CHAIR['x'] + CHAIR['seat'][0] / 2)} m); backrest "
         f"{fnum(CHAIR['back'][0])} m thick, from the seat up to z = {fnum(CHAIR['seat_top'] + CHAIR['back'][1])} m, its front "
-        f"face at x = {fnum(CHAIR['x'] - CHAIR['seat'][0] / 2 + CHAIR['back'][0])} m; four {fnum(CHAIR['leg'])} m square legs.",
+        f"face at x = {fnum(CHAIR['x'] - CHAIR['seat'][0] / 2 + CHAIR['back'][0])} m; four {fnum(CHAIR['leg'])} m square legs, "
+        f"set {fnum(CHAIR['leg_inset_x'])} m in from the seat's front and back edges (room for the heels under the seat).",
         f"  The gap between the seat's front edge and the desk is "
         f"{fnum(DESK['x'] - DESK['board'][0] / 2 - CHAIR['x'] - CHAIR['seat'][0] / 2)} m: the humanoid can stand straight in it,",
         "  feet where they will be when seated, then sit back (its hanging hands are at the height of the",

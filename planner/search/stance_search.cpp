@@ -11,6 +11,7 @@
 #include "planner/model/kinematics.h"
 #include "planner/search/candidates.h"
 #include "planner/search/plan_path.h"
+#include "planner/search/step_target.h"
 #include "planner/solver/posture_solver.h"
 #include "planner/solver/solver_pool.h"
 
@@ -317,11 +318,12 @@ SearchResult StanceSearch::run() {
       if (a.candidate.add) {
         ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt};
         // obj4 pulls the new contact towards its placement in the targeted milestone; a retry
-        // aims at a point nearer the current one (a shorter step).
+        // aims at a point nearer the current one (a shorter step); never across another contact.
         const Placement now = measure_placement(scene, a.candidate.contact, node.q());
         const Placement aim = measure_placement(scene, a.candidate.contact, q_ref);
         const double share = std::pow(0.5, a.attempt);
-        added.placement_target = Placement{now.x + share * (aim.x - now.x), now.y + share * (aim.y - now.y), aim.theta};
+        added.placement_target =
+            step_target(scene, node.stance(), node.placements, a.candidate.contact, now, aim, share);
         // Heading for the goal (the last milestone), a goal contact with a stated placement is
         // first tried exactly there; a retry lets the solver choose.
         for (const StanceContact& g : scenario_.goal_stance)
