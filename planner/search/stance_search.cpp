@@ -73,6 +73,24 @@ bool undoes_last_step(const SearchNode& node, const Candidate& c) {
   return !c.add && node.step.action == "add" && node.step.changed && node.step.changed->same_surfaces(c.contact);
 }
 
+// Backtracking, last form (METHOD.md section 3: further configurations for already-expanded
+// pairs): once the open and retry queues are empty, the nodes expanded while an earlier milestone
+// was the target are opened again, so that their case-1 candidates aim at the current one. E.g. a
+// foot placed short at the start of a side-step: standing on the other foot already reaches the
+// side-step's first milestone, the foot just placed cannot be stepped again from its own node
+// (that would undo its step), but its parent, expanded again, places it towards the next one.
+// Returns false when no node was expanded for an earlier milestone.
+bool reopen_stale(std::vector<int>& expanded_for, int t, std::vector<int>& open) {
+  bool any = false;
+  for (int n = 0; n < int(expanded_for.size()); ++n)
+    if (expanded_for[n] >= 0 && expanded_for[n] < t) {
+      expanded_for[n] = -1;
+      open.push_back(n);
+      any = true;
+    }
+  return any;
+}
+
 }  // namespace
 
 StanceSearch::StanceSearch(const Scenario& scenario, SearchOptions options)
@@ -262,6 +280,8 @@ SearchResult StanceSearch::run() {
   // Backtracking queues: failed candidates that would add a goal contact are retried at once from
   // other initial guesses; the others when the open queue is empty.
   std::deque<Attempt> urgent, retries;
+  // The milestone each node was last expanded for (-1: not yet), for the last form of backtracking.
+  std::vector<int> expanded_for;
   while (true) {
     if (stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
     if (elapsed() > options_.time_limit_s)
@@ -281,6 +301,8 @@ SearchResult StanceSearch::run() {
       const int n = *best;
       open.erase(best);
       ++result.nodes_expanded;
+      expanded_for.resize(tree.size(), -1);
+      expanded_for[n] = t;
       SearchEvent e;
       e.kind = SearchEventKind::Expansion;
       e.node = n;
@@ -301,6 +323,8 @@ SearchResult StanceSearch::run() {
       // other initial guesses.
       batch.assign(retries.begin(), retries.end());
       retries.clear();
+    } else if (reopen_stale(expanded_for, t, open)) {
+      continue;
     } else {
       return give_up(PlanStatus::Exhausted, "every reachable stance was tried");
     }

@@ -50,5 +50,29 @@ TEST(HumanoidSitDesk, PlansWalksSitsAndCertifies) {
   EXPECT_LT(q[2], 0.75);
 }
 
+// The corner of the walk, from a start 2 cm to the right: the left foot lands short of the
+// side-step, standing on it already reaches the side-step's first milestone, and the right foot
+// cannot pass it. The search then runs out of open nodes; it expands the nodes made for earlier
+// milestones again (the parent places the left foot towards the next milestone) and finds a plan.
+TEST(HumanoidSitDesk, CornerFromTwoCentimetresRightNeedsNodesExpandedAgain) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_sit_desk.yaml"));
+  const System& system = scenario.scene.system;
+  scenario.initial_configuration[system.offset(0) + 1] -= 0.02;  // the robot's base y
+  SearchOptions options = scenario.search;
+  options.threads = 2;
+  StanceSearch search(scenario, options);
+  std::set<int> expanded;
+  int expansions = 0;
+  search.set_observer([&](const SearchEvent& e) {
+    if (e.kind != SearchEventKind::Expansion) return;
+    ++expansions;
+    expanded.insert(e.node);
+  });
+  const SearchResult result = search.run();
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  EXPECT_LT(int(expanded.size()), expansions) << "no node was expanded again";
+  EXPECT_EQ(result.plan.steps.back().stance.size(), 6);
+}
+
 }  // namespace
 }  // namespace stanceplan
