@@ -4,6 +4,9 @@
 # New corpus entries go to FUZZ_BUILD_DIR/fuzz/corpus-out/TARGET (not into the source tree); a
 # crash leaves crash-* / leak-* / oom-* / timeout-* in FUZZ_BUILD_DIR/fuzz/artifacts/ and fails
 # the script (fuzz/lsan.supp lists a third-party leak on an error path).
+# FUZZ_SEED (default 1) fixes libFuzzer's mutations, so that a run from a fresh corpus-out folder
+# replays the same inputs as the last one (CI's short run is a regression gate, not a lottery);
+# hunt for new faults with FUZZ_SEED=0 (random) and a longer FUZZ_SECONDS.
 # Usage: scripts/run_fuzz.sh [TARGET...]  (default: scenario surfaces plan urdf srdf)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,7 +28,7 @@ for t in "${targets[@]}"; do
   # One process, one core. -timeout: no input may take 10 s; -rss_limit_mb: ASan's shadow memory.
   log="$build_dir/fuzz/$t.log"
   status=0
-  LSAN_OPTIONS="suppressions=$root/fuzz/lsan.supp ${LSAN_OPTIONS:-}" "$build_dir/fuzz/fuzz_$t" "$out" "$build_dir/fuzz/corpus/$t" -max_total_time="$seconds" -timeout=10 \
+  LSAN_OPTIONS="suppressions=$root/fuzz/lsan.supp ${LSAN_OPTIONS:-}" "$build_dir/fuzz/fuzz_$t" "$out" "$build_dir/fuzz/corpus/$t" -max_total_time="$seconds" -seed="${FUZZ_SEED:-1}" -timeout=10 \
     -rss_limit_mb=4096 -artifact_prefix="$artifacts/$t-" -print_final_stats=1 >"$log" 2>&1 || status=$?
   grep -E "^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec|Done [0-9]+ runs)|ERROR|SUMMARY" "$log" | tail -8 || true
   if [ "$status" -ne 0 ]; then
