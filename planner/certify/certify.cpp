@@ -5,6 +5,7 @@
 #include <map>
 
 #include "planner/collision/signed_distance.h"
+#include "planner/contact/polygon.h"
 #include "planner/model/kinematics.h"
 
 namespace stanceplan {
@@ -105,13 +106,7 @@ class Checker {
       for (int v = 0; v < int(s1.vertices_S.size()); ++v) {
         const Eigen::Vector3d p_S2 = T2.inverse() * (T1 * Eigen::Vector3d(s1.vertices_S[v].x(), s1.vertices_S[v].y(), 0.0));
         note("contact plane", "m", std::abs(p_S2.z()), kDistanceTol, i, name + ", vertex " + std::to_string(v));
-        double outside = 0.0;
-        for (size_t e = 0; e < poly.size(); ++e) {
-          const Eigen::Vector2d a = poly[e], b = poly[(e + 1) % poly.size()];
-          const Eigen::Vector2d edge = (b - a).normalized();
-          const Eigen::Vector2d inward(-edge.y(), edge.x());
-          outside = std::max(outside, -inward.dot(p_S2.head<2>() - a));
-        }
+        const double outside = std::max(0.0, distance_outside(poly, p_S2.head<2>()));
         note("contact polygon", "m", outside, kDistanceTol, i, name + ", vertex " + std::to_string(v));
       }
     }

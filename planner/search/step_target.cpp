@@ -4,19 +4,18 @@
 #include <cmath>
 #include <limits>
 
+#include "planner/contact/polygon.h"
+
 namespace stanceplan {
 namespace {
 
-// Smallest gap between the projections of a and b on the outward normals of a's edges.
+// The largest gap, over the outward normals of a's edges, between a's edge and b's nearest vertex.
 double gap_along_edges(const std::vector<Eigen::Vector2d>& a,
                        const std::vector<Eigen::Vector2d>& b) {
   double best = -std::numeric_limits<double>::infinity();
   const size_t n = a.size();
-  // a is counter-clockwise, so the outward normal of edge (a_i, a_i+1) is its direction turned by
-  // -90 deg.
   for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d edge = a[(i + 1) % n] - a[i];
-    const Eigen::Vector2d normal = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
+    const Eigen::Vector2d normal = -inward_normal(a[i], a[(i + 1) % n]);
     double nearest = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector2d& p : b) nearest = std::min(nearest, normal.dot(p - a[i]));
     best = std::max(best, nearest);
@@ -48,12 +47,7 @@ double footprint_separation(const std::vector<Eigen::Vector2d>& a,
 }
 
 bool footprint_contains(const std::vector<Eigen::Vector2d>& footprint, const Eigen::Vector2d& p) {
-  const size_t n = footprint.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d edge = footprint[(i + 1) % n] - footprint[i], to_p = p - footprint[i];
-    if (edge.x() * to_p.y() - edge.y() * to_p.x() < 0.0) return false;
-  }
-  return true;
+  return distance_outside(footprint, p) <= 0.0;
 }
 
 Placement step_target(const Scene& scene, const Stance& stance,

@@ -15,9 +15,12 @@
 namespace stanceplan {
 
 struct HessianStructure {
+  // Where an entry's value comes from: the differenced column j (H(i, j)), the mirror column i
+  // (H(j, i), q-q block), the mean of both, or the exact lambda-lambda block.
+  enum class Source : char { Column, Mirror, Mean, Exact };
   HessianGroups groups;
-  std::vector<char> force_pattern;  // nl x nl: lambda-lambda entries that can be nonzero
-  std::vector<int> rows, cols;      // the entries given to the solver (lower triangle)
+  std::vector<int> rows, cols;  // the entries given to the solver (lower triangle)
+  std::vector<Source> sources;  // per entry
 };
 
 class HessianCache {

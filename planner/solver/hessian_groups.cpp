@@ -11,10 +11,11 @@ class Colouring {
   void assign(int k) {
     for (int G = 0; G < int(g_.groups.size()); ++G)
       if (try_add(k, G)) return;
-    g_.groups.emplace_back();
+    // A group of its own: every row it moves is read from it alone.
+    g_.group_of_column[std::size_t(k)] = int(g_.groups.size());
+    g_.groups.push_back({k});
     g_.count.resize(g_.count.size() + std::size_t(g_.n), 0);
-    const bool added = try_add(k, int(g_.groups.size()) - 1);  // alone: always recoverable
-    (void)added;
+    move(k, int(g_.groups.size()) - 1, +1);
   }
 
  private:

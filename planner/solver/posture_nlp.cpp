@@ -263,8 +263,7 @@ std::shared_ptr<const HessianStructure> PostureNlp::measure_hessian_structure() 
   auto structure = std::make_shared<HessianStructure>();
   structure->groups = make_hessian_groups(std::move(pattern), n(), nq);
   // lambda-lambda: 2 w_force I + 2 w_torque (dtau/dlambda)^T (dtau/dlambda) (see hessian_values).
-  std::vector<char>& forces = structure->force_pattern;
-  forces.assign(size_t(nl) * size_t(nl), 0);
+  std::vector<char> forces(size_t(nl) * size_t(nl), 0);
   for (int a = 0; a < nl; ++a) forces[size_t(a) * size_t(nl) + size_t(a)] = 1;
   if (state.options.w_torque > 0.0 && nl > 0) {
     state.set_x(x.data());
@@ -276,25 +275,26 @@ std::shared_ptr<const HessianStructure> PostureNlp::measure_hessian_structure() 
             for (int b = 0; b < nl; ++b)
               if (D(r, nq + b) != 0.0) forces[size_t(a) * size_t(nl) + size_t(b)] = 1;
   }
+  using Source = HessianStructure::Source;
+  const HessianGroups& groups = structure->groups;
   for (int i = 0; i < n(); ++i)
     for (int j = 0; j <= i; ++j) {
-      const bool entry = j < nq ? structure->groups.needed(i, j)
-                                : forces[size_t(i - nq) * size_t(nl) + size_t(j - nq)] != 0;
-      if (!entry) continue;
+      Source source = Source::Exact;
+      if (j < nq) {
+        if (!groups.needed(i, j)) continue;
+        // From column j, or in the q-q block from column i, or the mean of both when both read
+        // it; make_hessian_groups guarantees one side.
+        const bool ij = groups.readable(i, j);
+        const bool ji = i < nq && groups.readable(j, i);
+        source = ij && ji ? Source::Mean : ij ? Source::Column : Source::Mirror;
+      } else if (!forces[size_t(i - nq) * size_t(nl) + size_t(j - nq)]) {
+        continue;
+      }
       structure->rows.push_back(i);
       structure->cols.push_back(j);
+      structure->sources.push_back(source);
     }
   return structure;
-}
-
-// Entry (i, j) of the differenced columns (j < nq): from column j, or in the q-q block from
-// column i, or the mean of both when both read it.
-double PostureNlp::differenced_entry(int i, int j) const {
-  const HessianGroups& groups = hessian_->groups;
-  const bool ij = groups.readable(i, j);
-  const bool ji = i < layout_.nq && groups.readable(j, i);
-  if (ij && ji) return 0.5 * (H_(i, j) + H_(j, i));
-  return ij ? H_(i, j) : H_(j, i);  // make_hessian_groups guarantees one side
 }
 
 void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, const double* y_in,
@@ -334,9 +334,15 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
               obj_factor * 2.0 * o.w_torque * D.rightCols(nl).transpose() * D.rightCols(nl);
     }
   }
+  using Source = HessianStructure::Source;
   for (size_t k = 0; k < hessian_->rows.size(); ++k) {
     const int i = hessian_->rows[k], j = hessian_->cols[k];
-    values[k] = j < nq ? differenced_entry(i, j) : H_(i, j);
+    switch (hessian_->sources[k]) {
+      case Source::Column:
+      case Source::Exact: values[k] = H_(i, j); break;
+      case Source::Mirror: values[k] = H_(j, i); break;
+      case Source::Mean: values[k] = 0.5 * (H_(i, j) + H_(j, i)); break;
+    }
   }
 }
 

@@ -69,7 +69,6 @@ class PostureNlp {
   void probe_point(Eigen::VectorXd* x, Eigen::VectorXd* y) const;
   std::shared_ptr<const HessianStructure> measure_hessian_structure();
   HessianCache::Key hessian_key() const;
-  double differenced_entry(int i, int j) const;
 
   std::shared_ptr<const HessianStructure> hessian_;
   Eigen::VectorXd x0_;  // the starting point

@@ -11,6 +11,7 @@
 #include "planner/util/input_error.h"
 #include "tests/support/cli.h"
 #include "tests/support/paths.h"
+#include "tests/support/scenario_text.h"
 
 namespace stanceplan {
 namespace {
@@ -19,28 +20,9 @@ using ::testing::HasSubstr;
 
 // The humanoid standing on `environment`, lines 1-13; stances and the rest follow.
 std::string entities(const std::string& environment) {
-  const std::string assets = test::source_path("assets");
-  return "format: stanceplan/scenario@1\n"  // 1
-         "entities:\n"                      // 2
-         "  - name: robot\n"                // 3
-         "    kind: floating\n"             // 4
-         "    urdf: " +
-         assets +
-         "/robots/humanoid/humanoid.urdf\n"  // 5
-         "    surfaces: " +
-         assets +
-         "/robots/humanoid/humanoid.surfaces.yaml\n"  // 6
-         "    configuration:\n"                       // 7
-         "      base_position: [0, 0, 0.90]\n"        // 8
-         "      joints: {l_hip_p: -0.25, l_knee_p: 0.5, l_ankle_p: -0.25, r_hip_p: -0.25, "
-         "r_knee_p: 0.5, r_ankle_p: -0.25}\n"  // 9
-         "  - name: env\n"                     // 10
-         "    kind: environment\n"             // 11
-         "    urdf: " +
-         assets + "/environments/" + environment + "/" + environment +
-         ".urdf\n"  // 12
-         "    surfaces: " +
-         assets + "/environments/" + environment + "/" + environment + ".surfaces.yaml\n";  // 13
+  return test::humanoid_on(environment,
+                           "{l_hip_p: -0.25, l_knee_p: 0.5, l_ankle_p: -0.25, r_hip_p: -0.25, "
+                           "r_knee_p: 0.5, r_ankle_p: -0.25}");
 }
 
 // Both feet on the floor of flat_ground, where the humanoid_walk scenario starts.

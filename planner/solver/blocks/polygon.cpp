@@ -1,17 +1,18 @@
 #include <algorithm>
 
+#include "planner/contact/polygon.h"
 #include "planner/solver/blocks/blocks.h"
 
 namespace stanceplan {
 
-PolygonBlock::PolygonBlock(const NlpState& state, int task) : ConstraintBlock("polygon"), task_(task) {
+PolygonBlock::PolygonBlock(const NlpState& state, int task)
+    : ConstraintBlock("polygon"), task_(task) {
   const ContactConstants& c = state.constants[task];
   vertices1_ = static_cast<int>(c.v1_L.size());
   const auto& poly = c.v2_S;
   const int n = static_cast<int>(poly.size());
   for (int e = 0; e < n; ++e) {
-    const Eigen::Vector2d edge = (poly[(e + 1) % n] - poly[e]).normalized();
-    const Eigen::Vector2d inward(-edge.y(), edge.x());  // left of a counter-clockwise edge
+    const Eigen::Vector2d inward = inward_normal(poly[e], poly[(e + 1) % n]);
     edge_normals_.push_back(inward);
     edge_offsets_.push_back(inward.dot(poly[e]));
   }
@@ -20,7 +21,8 @@ PolygonBlock::PolygonBlock(const NlpState& state, int task) : ConstraintBlock("p
   sort_unique(&columns_);
 }
 
-void PolygonBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const {
+void PolygonBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,
+                          Eigen::Ref<Eigen::VectorXd> upper) const {
   lower.setZero();
   upper.setConstant(1e19);
 }

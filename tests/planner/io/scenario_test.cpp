@@ -8,6 +8,7 @@
 #include "planner/io/scenario.h"
 #include "planner/util/input_error.h"
 #include "tests/support/paths.h"
+#include "tests/support/scenario_text.h"
 
 namespace stanceplan {
 namespace {
@@ -17,29 +18,7 @@ using ::testing::HasSubstr;
 // A valid scenario in a temporary folder, with `change` applied to its text.
 class ScenarioFaults : public ::testing::Test {
  protected:
-  std::string header() const {
-    const std::string assets = test::source_path("assets");
-    return "format: stanceplan/scenario@1\n"  // 1
-           "entities:\n"                      // 2
-           "  - name: robot\n"                // 3
-           "    kind: floating\n"             // 4
-           "    urdf: " +
-           assets +
-           "/robots/humanoid/humanoid.urdf\n"  // 5
-           "    surfaces: " +
-           assets +
-           "/robots/humanoid/humanoid.surfaces.yaml\n"  // 6
-           "    configuration:\n"                       // 7
-           "      base_position: [0, 0, 0.9]\n"         // 8
-           "      joints: {l_knee_p: 0.4}\n"            // 9
-           "  - name: env\n"                            // 10
-           "    kind: environment\n"                    // 11
-           "    urdf: " +
-           assets +
-           "/environments/flat_ground/flat_ground.urdf\n"  // 12
-           "    surfaces: " +
-           assets + "/environments/flat_ground/flat_ground.surfaces.yaml\n";  // 13
-  }
+  std::string header() const { return test::humanoid_on("flat_ground", "{l_knee_p: 0.4}"); }
   std::string stances() const {
     return "stances:\n"                                  // 14
            "  initial:\n"                                // 15
