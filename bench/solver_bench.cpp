@@ -75,6 +75,12 @@ void BM_Warm(benchmark::State& state) {
   r.q_init = first.q;
   r.q_init[0] += 0.02;  // a nearby guess, as the search's parent node gives
   r.q_ref = first.q;
+  if (std::getenv("STANCEPLAN_FORCE_GUESS"))
+    for (const VertexForce& f : first.forces) {
+      auto& guess = r.contacts[size_t(f.contact)].force_guess_W;
+      guess.resize(size_t(f.vertex) + 1);
+      guess[size_t(f.vertex)] = f.force_W;
+    }
   PostureResult result;
   for (auto _ : state) result = solver.solve(r);
   report(state, result);

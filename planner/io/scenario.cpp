@@ -425,7 +425,7 @@ Stance Scenario::stance(const std::vector<StanceContact>& contacts) const {
 
 PostureRequest Scenario::loaded_request(const std::vector<StanceContact>& contacts, const Eigen::VectorXd& q) const {
   PostureRequest request;
-  for (const StanceContact& c : contacts) request.contacts.push_back({c.contact, true, c.placement, std::nullopt});
+  for (const StanceContact& c : contacts) request.contacts.push_back({c.contact, true, c.placement, std::nullopt, {}});
   request.q_init = q;
   request.q_ref = q;
   return request;

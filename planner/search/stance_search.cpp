@@ -337,10 +337,10 @@ SearchResult StanceSearch::run() {
       const SearchNode& node = tree[a.node];
       PostureRequest& r = requests[i];
       for (size_t k = 0; k < node.stance().contacts().size(); ++k)
-        r.contacts.push_back({node.stance().contacts()[k], true, node.placements[k], std::nullopt});
+        r.contacts.push_back({node.stance().contacts()[k], true, node.placements[k], std::nullopt, {}});
       const Eigen::VectorXd& q_ref = guide.size() > 0 ? guide.milestone(t) : node.q();
       if (a.candidate.add) {
-        ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt};
+        ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt, {}};
         // obj4 pulls the new contact towards its placement in the targeted milestone; a retry
         // aims at a point nearer the current one (a shorter step); never across another contact.
         const Placement now = measure_placement(scene, a.candidate.contact, node.q());

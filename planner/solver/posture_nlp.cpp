@@ -120,14 +120,15 @@ void PostureNlp::starting_point(double* x) const {
   std::copy(x0_.data(), x0_.data() + n(), x);
 }
 
-// The request's configuration, and an even share of the weight of every floating body over the
-// loaded vertices, as an interior point (lambda > 0) of the cone coefficients. (Measured with
-// bench/solver_bench: starting instead from the least change of these forces that balances the
-// bodies at q_init (E16-E17) took more iterations, 6/14/12 instead of 7/11/10 for 2/3/4
-// contacts warm started: Ipopt's first steps then grow the forces far from there.)
+// The request's configuration and, for every loaded contact, its force guess (the parent node's
+// forces) or else an even share of the weight of every floating body over the loaded vertices, as
+// an interior point (lambda > 0) of the cone coefficients. (Measured with bench/solver_bench:
+// starting instead from the least change of the even shares that balances the bodies at q_init
+// (E16-E17) took more iterations, 6/14/12 instead of 7/11/10 for 2/3/4 contacts warm started:
+// Ipopt's first steps then grow the forces far from there.)
 void PostureNlp::make_starting_point() {
   const PostureRequest& request = state_.request;
-  x0_.resize(n());
+  x0_.setZero(n());
   x0_.head(layout_.nq) = request.q_init;
   double weight = 0.0;
   for (const Entity& e : state_.scene.system.entities())
@@ -136,13 +137,41 @@ void PostureNlp::make_starting_point() {
   for (const ForceBlock& block : layout_.forces) vertices += block.num_vertices;
   const double per_vertex = vertices > 0 ? weight / vertices : 0.0;
   const double cos_half = 1.0 / std::sqrt(1.0 + state_.options.friction * state_.options.friction);
+  state_.set_x(x0_.data());  // the generators' world directions at q_init
   for (const ForceBlock& block : layout_.forces) {
     auto lambda = x0_.segment(block.first_column, block.size());
-    if (block.bilateral)
+    const std::vector<Eigen::Vector3d>& guess = request.contacts[size_t(block.task)].force_guess_W;
+    if (int(guess.size()) == block.num_vertices) {
+      for (int j = 0; j < block.num_vertices; ++j)
+        lambda.segment(j * block.per_vertex, block.per_vertex) =
+            cone_coefficients(block, state_.frames[size_t(block.task)], guess[size_t(j)]);
+    } else if (block.bilateral) {
       lambda.setZero();
-    else
+    } else {
       lambda.setConstant(std::max(per_vertex / (block.per_vertex * cos_half), 1e-3));
+    }
   }
+}
+
+// Coefficients of the K generators (E5) that sum to the world force f, clamped inside the cone:
+// with generators equally spaced around s2's normal z2 at angles 2 pi k / K from x2,
+//   lambda_k = (f.z2) / (K c) + 2 (f_t . e_k) / (K mu c),   c = cos(atan(mu)),
+// sums to f exactly when f is inside the linearised cone. Bilateral: the world components.
+Eigen::VectorXd PostureNlp::cone_coefficients(const ForceBlock& block, const ContactFrames& frames,
+                                              const Eigen::Vector3d& f) const {
+  if (block.bilateral) return f;
+  const int K = block.per_vertex;
+  const double mu = state_.options.friction;
+  const double c = 1.0 / std::sqrt(1.0 + mu * mu);
+  const double normal = f.dot(frames.z2), tx = f.dot(frames.x2), ty = f.dot(frames.y2);
+  Eigen::VectorXd lambda(K);
+  for (int k = 0; k < K; ++k) {
+    const double angle = 2.0 * M_PI * k / K;
+    const double tangential = tx * std::cos(angle) + ty * std::sin(angle);
+    const double turn = mu > 0.0 ? 2.0 * tangential / (K * mu * c) : 0.0;
+    lambda[k] = std::max(normal / (K * c) + turn, 1e-3);
+  }
+  return lambda;
 }
 
 void PostureNlp::update(const double* x, bool new_x) {
@@ -339,9 +368,15 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
     const int i = hessian_->rows[k], j = hessian_->cols[k];
     switch (hessian_->sources[k]) {
       case Source::Column:
-      case Source::Exact: values[k] = H_(i, j); break;
-      case Source::Mirror: values[k] = H_(j, i); break;
-      case Source::Mean: values[k] = 0.5 * (H_(i, j) + H_(j, i)); break;
+      case Source::Exact:
+        values[k] = H_(i, j);
+        break;
+      case Source::Mirror:
+        values[k] = H_(j, i);
+        break;
+      case Source::Mean:
+        values[k] = 0.5 * (H_(i, j) + H_(j, i));
+        break;
     }
   }
 }

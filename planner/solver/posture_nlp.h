@@ -66,6 +66,8 @@ class PostureNlp {
   PostureRequest generic_request(const Eigen::VectorXd& q) const;
 
   void make_starting_point();
+  Eigen::VectorXd cone_coefficients(const ForceBlock& block, const ContactFrames& frames,
+                                    const Eigen::Vector3d& f) const;
   void probe_point(Eigen::VectorXd* x, Eigen::VectorXd* y) const;
   std::shared_ptr<const HessianStructure> measure_hessian_structure();
   HessianCache::Key hessian_key() const;

@@ -21,6 +21,9 @@ struct ContactTask {
   std::optional<Placement> placement;
   // Optional E25 target for a free placement (obj4: pull s1's origin towards (x, y) of s2's plane).
   std::optional<Placement> placement_target;
+  // Warm start of a loaded contact's forces: the force by s2 on s1 at each vertex of s1 (world
+  // frame), e.g. the parent node's. Empty: an even share of the weight (PostureNlp).
+  std::vector<Eigen::Vector3d> force_guess_W;
 };
 
 struct PostureRequest {
@@ -35,21 +38,21 @@ struct PostureRequest {
 enum class HessianMode { LimitedMemory, FiniteDifference };
 
 struct SolverOptions {
-  double friction = 1.0;        // Coulomb coefficient mu of every unilateral contact
-  int cone_generators = 4;      // K: generators of the linearised friction cone (E5)
+  double friction = 1.0;    // Coulomb coefficient mu of every unilateral contact
+  int cone_generators = 4;  // K: generators of the linearised friction cone (E5)
   // Objective weights (E21-E25): configuration, contact force (lambda), joint torque, placement.
   double w_configuration = 1.0;
   double w_force = 1e-5;
   double w_torque = 1e-5;
   double w_placement = 10.0;
-  double collision_margin = 0.005;   // E20: signed distance >= margin (m)
+  double collision_margin = 0.005;          // E20: signed distance >= margin (m)
   double collision_active_distance = 0.05;  // pairs closer than this enter the program
-  int max_active_set_rounds = 4;     // re-solves when a pair outside the active set penetrates
+  int max_active_set_rounds = 4;  // re-solves when a pair outside the active set penetrates
   HessianMode hessian = HessianMode::FiniteDifference;
   int max_iterations = 100;
-  double tolerance = 1e-6;           // constraint violation and complementarity (Ipopt)
+  double tolerance = 1e-6;             // constraint violation and complementarity (Ipopt)
   double optimality_tolerance = 1e-4;  // Ipopt tol / dual_inf_tol (the objective is a regulariser)
-  bool derivative_test = false;      // Ipopt's first-order derivative checker (tests only)
+  bool derivative_test = false;        // Ipopt's first-order derivative checker (tests only)
   // Families that can be switched off (diagnosis, experiments).
   bool enforce_torque_limits = true;
   bool enforce_collisions = true;
@@ -59,7 +62,7 @@ struct SolverOptions {
   bool diagnose_infeasibility = false;
   // When set and true, a solve stops at its next iteration (status NumericalFailure, "cancelled").
   const std::atomic<bool>* cancel = nullptr;
-  int print_level = 0;               // Ipopt's console output (0 = silent, 5 = per iteration)
+  int print_level = 0;  // Ipopt's console output (0 = silent, 5 = per iteration)
   // Further Ipopt options by name, applied last (values parsed as integer, number or string).
   std::vector<std::pair<std::string, std::string>> ipopt_options;
 };
