@@ -34,6 +34,7 @@ void forward_kinematics(const Entity& entity, const Eigen::Ref<const Eigen::Vect
   if (entity.floating()) {
     const Eigen::Vector4d quat = q.segment<4>(Entity::kBaseQuaternion);
     data.p_WB = q.segment<3>(Entity::kBasePosition);
+    data.quaternion_WB = quat;
     data.R_WB = rotation_from_quaternion(quat);
     rotation_quaternion_derivatives(quat, &data.dR_WB_dquat);
   } else {

@@ -21,6 +21,9 @@ struct ModelData {
   std::vector<Eigen::Vector3d> subtree_moment_W;
   // Root orientation and its derivative with respect to the 4 quaternion components (floating).
   Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
+  // The configuration's root quaternion (w, x, y, z) as given, not normalised (floating only):
+  // second derivatives of R(phi) need phi itself (kinematics_hessian.h).
+  Eigen::Vector4d quaternion_WB = Eigen::Vector4d(1, 0, 0, 0);
   Eigen::Vector3d p_WB = Eigen::Vector3d::Zero();
   std::array<Eigen::Matrix3d, 4> dR_WB_dquat;
 };
