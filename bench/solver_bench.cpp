@@ -23,7 +23,8 @@ const Scene& scene() {
 PostureRequest request(int contacts) {
   const Scene& s = scene();
   PostureRequest r;
-  r.contacts = {test::task(s, "robot/l_sole", "env/floor"), test::task(s, "robot/r_sole", "env/floor")};
+  r.contacts = {test::task(s, "robot/l_sole", "env/floor"),
+                test::task(s, "robot/r_sole", "env/floor")};
   if (contacts >= 3) r.contacts.push_back(test::task(s, "robot/r_palm", "env/wall"));
   if (contacts >= 4) r.contacts.push_back(test::task(s, "robot/l_palm", "env/wall"));
   r.q_init = test::standing_configuration(s);
@@ -40,7 +41,16 @@ PostureRequest request(int contacts) {
 // STANCEPLAN_IPOPT="name=value,name=value" passes Ipopt options through (for experiments).
 SolverOptions options() {
   SolverOptions o;
-  if (const char* h = std::getenv("STANCEPLAN_HESSIAN"); h && std::string(h) == "lbfgs") o.hessian = HessianMode::LimitedMemory;
+  if (const char* h = std::getenv("STANCEPLAN_HESSIAN")) {
+    const std::string mode = h;
+    if (mode == "lbfgs") o.hessian = HessianMode::LimitedMemory;
+    if (mode == "fd") o.hessian = HessianMode::FiniteDifference;
+    if (mode == "analytic") o.hessian = HessianMode::Analytic;
+  }
+  if (std::getenv("STANCEPLAN_NO_TORQUE")) o.w_torque = 0.0;  // experiment: without E24
+  if (std::getenv("STANCEPLAN_NO_TORQUE_LIMITS")) o.enforce_torque_limits = false;  // without E19
+  if (const char* f = std::getenv("STANCEPLAN_TORQUE_ACTIVE"))
+    o.torque_active_fraction = std::atof(f);
   if (const char* env = std::getenv("STANCEPLAN_IPOPT")) {
     std::string text = env;
     size_t start = 0;
@@ -48,7 +58,8 @@ SolverOptions options() {
       const size_t end = std::min(text.find(',', start), text.size());
       const std::string item = text.substr(start, end - start);
       const size_t eq = item.find('=');
-      if (eq != std::string::npos) o.ipopt_options.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+      if (eq != std::string::npos)
+        o.ipopt_options.emplace_back(item.substr(0, eq), item.substr(eq + 1));
       start = end + 1;
     }
   }

@@ -17,12 +17,17 @@ class ConstraintBlock {
 
   const std::string& family() const { return family_; }
   virtual int rows() const = 0;
-  virtual void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const = 0;
+  virtual void bounds(Eigen::Ref<Eigen::VectorXd> lower,
+                      Eigen::Ref<Eigen::VectorXd> upper) const = 0;
   // Appends the columns of x that row r may depend on (a superset of its nonzeros).
   virtual void row_columns(int r, std::vector<int>* columns) const = 0;
   virtual void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const = 0;
   // Dense rows() x n, zeroed by the caller.
   virtual void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const = 0;
+  // H += sum_r y[r] d2 g_r / dx2 over x = [q | lambda] (n x n, both triangles), y: this block's
+  // multipliers (hessian_terms.h has the pieces).
+  virtual void add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                           Eigen::Ref<Eigen::MatrixXd> H) const = 0;
 
  private:
   std::string family_;

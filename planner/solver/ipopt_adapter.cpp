@@ -4,16 +4,16 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <sstream>
-#include <unistd.h>
+#include <vector>
 
 namespace stanceplan {
 namespace {
@@ -32,7 +32,7 @@ class PostureTnlp : public Ipopt::TNLP {
     n = nlp_.n();
     m = nlp_.m();
     nnz_jac_g = nlp_.nnz();
-    nnz_h_lag = options_.hessian == HessianMode::FiniteDifference ? nlp_.hessian_nnz() : 0;
+    nnz_h_lag = options_.hessian != HessianMode::LimitedMemory ? nlp_.hessian_nnz() : 0;
     index_style = C_STYLE;
     return true;
   }
@@ -56,7 +56,8 @@ class PostureTnlp : public Ipopt::TNLP {
     nlp_.objective_gradient(x, new_x, grad);
     return true;
   }
-  bool eval_g(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Index m, Ipopt::Number* g) override {
+  bool eval_g(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Index m,
+              Ipopt::Number* g) override {
     nlp_.constraints(x, new_x, g);
     for (int i = 0; i < m; ++i)
       if (!std::isfinite(g[i])) return false;  // Ipopt backs off instead of using a NaN
@@ -95,10 +96,10 @@ class PostureTnlp : public Ipopt::TNLP {
     final_objective = obj_value;
   }
 
-  bool eval_h(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Number obj_factor, Ipopt::Index,
-              const Ipopt::Number* lambda, bool, Ipopt::Index, Ipopt::Index* rows, Ipopt::Index* cols,
-              Ipopt::Number* values) override {
-    if (options_.hessian != HessianMode::FiniteDifference) return false;
+  bool eval_h(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Number obj_factor,
+              Ipopt::Index, const Ipopt::Number* lambda, bool, Ipopt::Index, Ipopt::Index* rows,
+              Ipopt::Index* cols, Ipopt::Number* values) override {
+    if (options_.hessian == HessianMode::LimitedMemory) return false;
     if (values == nullptr) {
       nlp_.hessian_structure(rows, cols);
       return true;
@@ -108,9 +109,10 @@ class PostureTnlp : public Ipopt::TNLP {
   }
 
   // Cancellation between iterations (the search's cancel flag).
-  bool intermediate_callback(Ipopt::AlgorithmMode, Ipopt::Index, Ipopt::Number, Ipopt::Number, Ipopt::Number,
-                             Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Number,
-                             Ipopt::Index, const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+  bool intermediate_callback(Ipopt::AlgorithmMode, Ipopt::Index, Ipopt::Number, Ipopt::Number,
+                             Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Number,
+                             Ipopt::Number, Ipopt::Number, Ipopt::Index, const Ipopt::IpoptData*,
+                             Ipopt::IpoptCalculatedQuantities*) override {
     return !(options_.cancel && options_.cancel->load());
   }
 
@@ -130,23 +132,37 @@ struct StatusInfo {
 StatusInfo classify(Ipopt::ApplicationReturnStatus s) {
   using A = Ipopt::ApplicationReturnStatus;
   switch (s) {
-    case A::Solve_Succeeded: return {PostureStatus::Solved, "Solve_Succeeded"};
-    case A::Solved_To_Acceptable_Level: return {PostureStatus::Solved, "Solved_To_Acceptable_Level"};
-    case A::Infeasible_Problem_Detected: return {PostureStatus::Infeasible, "Infeasible_Problem_Detected"};
-    case A::Restoration_Failed: return {PostureStatus::Infeasible, "Restoration_Failed"};
-    case A::Maximum_Iterations_Exceeded: return {PostureStatus::IterationLimit, "Maximum_Iterations_Exceeded"};
-    case A::Maximum_CpuTime_Exceeded: return {PostureStatus::IterationLimit, "Maximum_CpuTime_Exceeded"};
-    case A::Search_Direction_Becomes_Too_Small: return {PostureStatus::NumericalFailure, "Search_Direction_Becomes_Too_Small"};
-    case A::Diverging_Iterates: return {PostureStatus::NumericalFailure, "Diverging_Iterates"};
-    case A::Error_In_Step_Computation: return {PostureStatus::NumericalFailure, "Error_In_Step_Computation"};
-    case A::Invalid_Number_Detected: return {PostureStatus::NumericalFailure, "Invalid_Number_Detected"};
-    case A::Not_Enough_Degrees_Of_Freedom: return {PostureStatus::NumericalFailure, "Not_Enough_Degrees_Of_Freedom"};
-    case A::User_Requested_Stop: return {PostureStatus::NumericalFailure, "cancelled"};
-    default: return {PostureStatus::NumericalFailure, "Ipopt_Error"};
+    case A::Solve_Succeeded:
+      return {PostureStatus::Solved, "Solve_Succeeded"};
+    case A::Solved_To_Acceptable_Level:
+      return {PostureStatus::Solved, "Solved_To_Acceptable_Level"};
+    case A::Infeasible_Problem_Detected:
+      return {PostureStatus::Infeasible, "Infeasible_Problem_Detected"};
+    case A::Restoration_Failed:
+      return {PostureStatus::Infeasible, "Restoration_Failed"};
+    case A::Maximum_Iterations_Exceeded:
+      return {PostureStatus::IterationLimit, "Maximum_Iterations_Exceeded"};
+    case A::Maximum_CpuTime_Exceeded:
+      return {PostureStatus::IterationLimit, "Maximum_CpuTime_Exceeded"};
+    case A::Search_Direction_Becomes_Too_Small:
+      return {PostureStatus::NumericalFailure, "Search_Direction_Becomes_Too_Small"};
+    case A::Diverging_Iterates:
+      return {PostureStatus::NumericalFailure, "Diverging_Iterates"};
+    case A::Error_In_Step_Computation:
+      return {PostureStatus::NumericalFailure, "Error_In_Step_Computation"};
+    case A::Invalid_Number_Detected:
+      return {PostureStatus::NumericalFailure, "Invalid_Number_Detected"};
+    case A::Not_Enough_Degrees_Of_Freedom:
+      return {PostureStatus::NumericalFailure, "Not_Enough_Degrees_Of_Freedom"};
+    case A::User_Requested_Stop:
+      return {PostureStatus::NumericalFailure, "cancelled"};
+    default:
+      return {PostureStatus::NumericalFailure, "Ipopt_Error"};
   }
 }
 
-void set_options(Ipopt::IpoptApplication& app, const SolverOptions& options, const std::string& report) {
+void set_options(Ipopt::IpoptApplication& app, const SolverOptions& options,
+                 const std::string& report) {
   Ipopt::OptionsList& o = *app.Options();
   o.SetIntegerValue("print_level", options.print_level);
   o.SetStringValue("sb", "yes");  // no banner
@@ -196,8 +212,9 @@ void set_options(Ipopt::IpoptApplication& app, const SolverOptions& options, con
 IpoptRun run_ipopt(PostureNlp& nlp, const SolverOptions& options) {
   std::lock_guard<std::mutex> lock(ipopt_mutex());
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  const std::string report =
-      (std::filesystem::temp_directory_path() / ("stanceplan_ipopt_" + std::to_string(getpid()) + ".txt")).string();
+  const std::string report = (std::filesystem::temp_directory_path() /
+                              ("stanceplan_ipopt_" + std::to_string(getpid()) + ".txt"))
+                                 .string();
   set_options(*app, options, report);
   IpoptRun run;
   if (app->Initialize() != Ipopt::Solve_Succeeded) {

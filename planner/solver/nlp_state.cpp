@@ -52,6 +52,7 @@ ContactFrames make_frames(const Scene& scene, const ContactConstants& c) {
   f.J_p.assign(c.v1_L.size(), Eigen::MatrixXd::Zero(3, n1));
   f.U.resize(c.U_L2.size());
   f.J_U.assign(c.U_L2.size(), Eigen::MatrixXd::Zero(3, n2));
+  f.J_f.assign(c.v1_L.size(), Eigen::MatrixXd::Zero(3, n2));
   return f;
 }
 
@@ -94,13 +95,20 @@ NlpState::NlpState(const Scene& scene_, const PostureRequest& request_,
   }
   dtau_dp_.setZero(max_dof, 3);
   dtau_df_.setZero(max_dof, 3);
+  int max_nq = 0;
+  for (const Entity& e : system.entities()) max_nq = std::max(max_nq, e.nq());
+  for (Eigen::MatrixXd& J : hessian_scratch) J.setZero(3, max_nq);
+  gradient_scratch.setZero(layout.n);
+  for (const Entity& e : system.entities())
+    torque_weights.push_back(Eigen::VectorXd::Zero(e.model->num_dofs()));
 }
 
 void NlpState::set_x(const double* x_in) {
   x = Eigen::Map<const Eigen::VectorXd>(x_in, layout.n);
   const System& system = scene.system;
   for (int e = 0; e < system.num_entities(); ++e)
-    forward_kinematics(system.entity(e), x.segment(system.offset(e), system.entity(e).nq()), data[e]);
+    forward_kinematics(system.entity(e), x.segment(system.offset(e), system.entity(e).nq()),
+                       data[e]);
   for (size_t t = 0; t < frames.size(); ++t) {
     const ContactConstants& c = constants[t];
     ContactFrames& f = frames[t];
@@ -129,7 +137,8 @@ void NlpState::set_x(const double* x_in) {
       }
     }
   }
-  for (int e = 0; e < system.num_entities(); ++e) com[e] = center_of_mass(system.entity(e), data[e]);
+  for (int e = 0; e < system.num_entities(); ++e)
+    com[e] = center_of_mass(system.entity(e), data[e]);
   jacobians_ready_ = false;
   torque_values_ready_ = false;
   torques_ready_ = false;
@@ -151,8 +160,18 @@ void NlpState::ensure_jacobians() {
     vector_jacobian(E2, data[c.e2], c.l2, c.x2_L, f.J_x2);
     vector_jacobian(E2, data[c.e2], c.l2, c.y2_L, f.J_y2);
     vector_jacobian(E2, data[c.e2], c.l2, c.z2_L, f.J_z2);
-    for (size_t j = 0; j < c.v1_L.size(); ++j) point_jacobian(E1, data[c.e1], c.l1, c.v1_L[j], f.J_p[j]);
-    for (size_t k = 0; k < c.U_L2.size(); ++k) vector_jacobian(E2, data[c.e2], c.l2, c.U_L2[k], f.J_U[k]);
+    for (size_t j = 0; j < c.v1_L.size(); ++j)
+      point_jacobian(E1, data[c.e1], c.l1, c.v1_L[j], f.J_p[j]);
+    for (size_t k = 0; k < c.U_L2.size(); ++k)
+      vector_jacobian(E2, data[c.e2], c.l2, c.U_L2[k], f.J_U[k]);
+    const int b = layout.force_block_of_task[t];
+    if (b < 0 || layout.forces[b].bilateral) continue;
+    const ForceBlock& block = layout.forces[b];
+    for (int j = 0; j < block.num_vertices; ++j) {
+      f.J_f[j].setZero();
+      for (int k = 0; k < block.per_vertex; ++k)
+        f.J_f[j] += x[block.first_column + j * block.per_vertex + k] * f.J_U[k];
+    }
   }
   for (int e = 0; e < system.num_entities(); ++e)
     center_of_mass_jacobian(system.entity(e), data[e], J_com[e]);
@@ -166,8 +185,7 @@ void NlpState::add_entity_term(int entity, const Eigen::MatrixXd& J, const Eigen
   row.segment(scene.system.offset(entity), nq).noalias() += c.transpose() * J;
 }
 
-void NlpState::add_force_term(int task, int vertex, const Eigen::Vector3d& c,
-                              RowRef row) const {
+void NlpState::add_force_term(int task, int vertex, const Eigen::Vector3d& c, RowRef row) const {
   const ForceBlock& block = layout.forces[layout.force_block_of_task[task]];
   const int first = block.first_column + vertex * block.per_vertex;
   if (block.bilateral) {
@@ -217,8 +235,10 @@ void NlpState::for_each_load(LoadVisitor visit) {
     const ContactConstants& c = constants[t];
     const ContactFrames& fr = frames[t];
     for (size_t j = 0; j < fr.p.size(); ++j) {
-      if (system.entity(c.e1).model->num_dofs() > 0) visit(c.e1, c.l1, fr.p[j], fr.f[j], 1.0, int(t), int(j));
-      if (system.entity(c.e2).model->num_dofs() > 0) visit(c.e2, c.l2, fr.p[j], fr.f[j], -1.0, int(t), int(j));
+      if (system.entity(c.e1).model->num_dofs() > 0)
+        visit(c.e1, c.l1, fr.p[j], fr.f[j], 1.0, int(t), int(j));
+      if (system.entity(c.e2).model->num_dofs() > 0)
+        visit(c.e2, c.l2, fr.p[j], fr.f[j], -1.0, int(t), int(j));
     }
   }
 }
@@ -227,9 +247,11 @@ void NlpState::ensure_torque_values() {
   if (torque_values_ready_) return;
   for (int e = 0; e < scene.system.num_entities(); ++e) {
     tau[e].setZero();
-    if (tau[e].size() > 0) add_gravity_torque_values(scene.system.entity(e), data[e], scene.gravity, tau[e]);
+    if (tau[e].size() > 0)
+      add_gravity_torque_values(scene.system.entity(e), data[e], scene.gravity, tau[e]);
   }
-  for_each_load([&](int e, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f, double sign, int, int) {
+  for_each_load([&](int e, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f,
+                    double sign, int, int) {
     add_point_load_torque_value(scene.system.entity(e), data[e], link, p, sign * f, tau[e]);
   });
   torque_values_ready_ = true;
@@ -243,10 +265,13 @@ void NlpState::ensure_torques() {
     tau[e].setZero();
     dtau_dx[e].setZero();
     dtau_dq_[e].setZero();
-    if (tau[e].size() > 0) add_gravity_torques(system.entity(e), data[e], scene.gravity, tau[e], dtau_dq_[e]);
+    if (tau[e].size() > 0)
+      add_gravity_torques(system.entity(e), data[e], scene.gravity, tau[e], dtau_dq_[e]);
   }
-  for_each_load([&](int e, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f, double sign, int task,
-                    int vertex) { add_load(e, link, p, f, sign, task, vertex, frames[task].J_p[vertex]); });
+  for_each_load([&](int e, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f,
+                    double sign, int task, int vertex) {
+    add_load(e, link, p, f, sign, task, vertex, frames[task].J_p[vertex]);
+  });
   for (int e = 0; e < system.num_entities(); ++e)
     if (dtau_dq_[e].size() > 0)
       dtau_dx[e].middleCols(system.offset(e), system.entity(e).nq()) += dtau_dq_[e];

@@ -4,6 +4,7 @@
 // vertex and generator Jacobians, centres of mass, joint torques and their gradients).
 // Sized at construction; set_x / ensure_* allocate nothing.
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "planner/model/model_data.h"
@@ -33,6 +34,9 @@ struct ContactFrames {
   std::vector<Eigen::Vector3d> f;  // force at each vertex, by l2 on l1 (loaded contacts)
   Eigen::MatrixXd J_O1, J_x1, J_y1, J_z1, J_O2, J_x2, J_y2, J_z2;
   std::vector<Eigen::MatrixXd> J_p, J_U;
+  // d f_j / d(configuration of e2) = sum_k lambda_k J_U[k] (loaded unilateral contacts; zero for a
+  // bilateral one, whose force components are variables themselves).
+  std::vector<Eigen::MatrixXd> J_f;
 };
 
 class NlpState {
@@ -50,8 +54,7 @@ class NlpState {
                        RowRef row) const;
   // The derivative of a loaded contact's vertex force f_j with respect to x, contracted with c:
   // row += c^T df_j/dx (through lambda and the generators' rotation).
-  void add_force_term(int task, int vertex, const Eigen::Vector3d& c,
-                      RowRef row) const;
+  void add_force_term(int task, int vertex, const Eigen::Vector3d& c, RowRef row) const;
 
   const Scene& scene;
   const PostureRequest& request;
@@ -59,7 +62,7 @@ class NlpState {
   const NlpLayout& layout;
 
   Eigen::VectorXd x;
-  std::vector<ModelData> data;  // per entity
+  std::vector<ModelData> data;              // per entity
   std::vector<ContactConstants> constants;  // per request contact
   std::vector<ContactFrames> frames;        // per request contact
   std::vector<Eigen::Vector3d> com;         // per entity
@@ -68,10 +71,16 @@ class NlpState {
   std::vector<Eigen::VectorXd> tau;
   std::vector<Eigen::MatrixXd> dtau_dx;
 
+  // Workspace of the analytic Hessian (PostureNlp::hessian_values): four 3 x max-nq Jacobians for
+  // combined vectors, and per entity the weights w of w^T tau that the torque rows and the
+  // objective's torque term collect for one pass over the loads (torque_hessian.h).
+  std::array<Eigen::MatrixXd, 4> hessian_scratch;
+  Eigen::RowVectorXd gradient_scratch;  // 1 x n
+  std::vector<Eigen::VectorXd> torque_weights;
+
  private:
   void add_load(int entity, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f,
-                double sign, int task, int vertex,
-                const Eigen::Ref<const Eigen::MatrixXd>& J_p);
+                double sign, int task, int vertex, const Eigen::Ref<const Eigen::MatrixXd>& J_p);
 
   template <class LoadVisitor>
   void for_each_load(LoadVisitor visit);

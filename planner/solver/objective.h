@@ -12,6 +12,10 @@ class Objective {
   explicit Objective(const NlpState& state);
   double value(NlpState& state) const;
   void gradient(NlpState& state, Eigen::Ref<Eigen::VectorXd> grad) const;
+  // H += factor * Hessian (n x n, both triangles). The torque term's curvature through tau's own
+  // second derivatives is left in state.torque_weights (torque_hessian.h); its Gauss-Newton part
+  // 2 w3 (dtau/dx)^T (dtau/dx) is added here.
+  void add_hessian(NlpState& state, double factor, Eigen::Ref<Eigen::MatrixXd> H) const;
 
  private:
   Eigen::VectorXd q_ref_;

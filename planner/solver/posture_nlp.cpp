@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "planner/solver/blocks/blocks.h"
+#include "planner/solver/torque_hessian.h"
 
 namespace stanceplan {
 
 PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
                        const SolverOptions& options, std::vector<int> active_pairs,
-                       std::vector<double> pair_bounds, HessianCache* hessian_cache)
+                       std::vector<double> pair_bounds, HessianCache* hessian_cache,
+                       const std::vector<std::vector<int>>* torque_dofs)
     : layout_(scene, request, options),
       state_(scene, request, options, layout_),
       objective_(state_) {
@@ -28,7 +31,8 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
       add(std::make_unique<EquilibriumBlock>(state_, e));
     if (options.enforce_torque_limits && entity.kind != EntityKind::Object &&
         entity.model->num_dofs() > 0)
-      add(std::make_unique<TorqueLimitBlock>(state_, e));
+      add(std::make_unique<TorqueLimitBlock>(state_, e,
+                                             torque_dofs ? &(*torque_dofs)[size_t(e)] : nullptr));
   }
   if (pair_bounds.size() != active_pairs.size())
     pair_bounds.assign(active_pairs.size(), options.collision_margin);
@@ -53,19 +57,22 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
   grad_.setZero(layout_.n);
   grad_step_.setZero(layout_.n);
   x_step_.setZero(layout_.n);
-  make_starting_point();
-  if (options.hessian != HessianMode::FiniteDifference) return;
+  x0_ = make_starting_point(state_);
+  if (torque_dofs) torque_dofs_ = *torque_dofs;
+  if (options.hessian == HessianMode::LimitedMemory) return;
   const HessianCache::Key key = hessian_key();
   if (hessian_cache) hessian_ = hessian_cache->find(key);
   if (hessian_) return;
-  hessian_ = measure_hessian_structure();
+  hessian_ = options.hessian == HessianMode::Analytic ? measure_analytic_structure()
+                                                      : measure_hessian_structure();
   if (hessian_cache) hessian_cache->insert(key, hessian_);
 }
 
 // Everything the Hessian's structure depends on: the variables, the contacts and how each enters
 // the program, the non-collision rows and their columns, and the objective's torque term.
 HessianCache::Key PostureNlp::hessian_key() const {
-  HessianCache::Key key = {n(), layout_.nq, state_.options.w_torque > 0.0 ? 1 : 0};
+  HessianCache::Key key = {int(state_.options.hessian), n(), layout_.nq,
+                           state_.options.w_torque > 0.0 ? 1 : 0};
   for (const ContactTask& task : state_.request.contacts) {
     const Contact& c = task.contact;
     key.insert(key.end(),
@@ -75,6 +82,10 @@ HessianCache::Key PostureNlp::hessian_key() const {
   int smooth_rows = m_;  // the collision block, when there is one, comes last
   if (!blocks_.empty() && blocks_.back()->family() == "collision") smooth_rows = first_row_.back();
   key.push_back(smooth_rows);
+  for (const std::vector<int>& dofs : torque_dofs_) {  // which torque rows, not only how many
+    key.push_back(-1);
+    key.insert(key.end(), dofs.begin(), dofs.end());
+  }
   for (size_t k = 0; k < rows_.size() && rows_[k] < smooth_rows; ++k) {
     key.push_back(rows_[k]);
     key.push_back(cols_[k]);
@@ -120,48 +131,16 @@ void PostureNlp::starting_point(double* x) const {
   std::copy(x0_.data(), x0_.data() + n(), x);
 }
 
-// The request's configuration and, for every loaded contact, its force guess (the parent node's
-// forces) or else an even share of the weight of every floating body over the loaded vertices, as
-// an interior point (lambda > 0) of the cone coefficients. (Measured with bench/solver_bench:
-// starting instead from the least change of the even shares that balances the bodies at q_init
-// (E16-E17) took more iterations, 6/14/12 instead of 7/11/10 for 2/3/4 contacts warm started:
-// Ipopt's first steps then grow the forces far from there.)
-void PostureNlp::make_starting_point() {
-  const PostureRequest& request = state_.request;
-  x0_.setZero(n());
-  x0_.head(layout_.nq) = request.q_init;
-  double weight = 0.0;
-  for (const Entity& e : state_.scene.system.entities())
-    if (e.floating()) weight += e.model->total_mass * state_.scene.gravity.norm();
-  int vertices = 0;
-  for (const ForceBlock& block : layout_.forces) vertices += block.num_vertices;
-  const double per_vertex = vertices > 0 ? weight / vertices : 0.0;
-  const double cos_half = 1.0 / std::sqrt(1.0 + state_.options.friction * state_.options.friction);
-  state_.set_x(x0_.data());  // the generators' world directions at q_init
-  for (const ForceBlock& block : layout_.forces) {
-    auto lambda = x0_.segment(block.first_column, block.size());
-    const std::vector<Eigen::Vector3d>& guess = request.contacts[size_t(block.task)].force_guess_W;
-    if (int(guess.size()) == block.num_vertices) {
-      for (int j = 0; j < block.num_vertices; ++j)
-        lambda.segment(j * block.per_vertex, block.per_vertex) =
-            cone_coefficients(block, state_.frames[size_t(block.task)], guess[size_t(j)]);
-    } else if (block.bilateral) {
-      lambda.setZero();
-    } else {
-      lambda.setConstant(std::max(per_vertex / (block.per_vertex * cos_half), 1e-3));
-    }
-  }
-}
+namespace {
 
 // Coefficients of the K generators (E5) that sum to the world force f, clamped inside the cone:
 // with generators equally spaced around s2's normal z2 at angles 2 pi k / K from x2,
 //   lambda_k = (f.z2) / (K c) + 2 (f_t . e_k) / (K mu c),   c = cos(atan(mu)),
 // sums to f exactly when f is inside the linearised cone. Bilateral: the world components.
-Eigen::VectorXd PostureNlp::cone_coefficients(const ForceBlock& block, const ContactFrames& frames,
-                                              const Eigen::Vector3d& f) const {
+Eigen::VectorXd cone_coefficients(const ForceBlock& block, const ContactFrames& frames, double mu,
+                                  const Eigen::Vector3d& f) {
   if (block.bilateral) return f;
   const int K = block.per_vertex;
-  const double mu = state_.options.friction;
   const double c = 1.0 / std::sqrt(1.0 + mu * mu);
   const double normal = f.dot(frames.z2), tx = f.dot(frames.x2), ty = f.dot(frames.y2);
   Eigen::VectorXd lambda(K);
@@ -172,6 +151,45 @@ Eigen::VectorXd PostureNlp::cone_coefficients(const ForceBlock& block, const Con
     lambda[k] = std::max(normal / (K * c) + turn, 1e-3);
   }
   return lambda;
+}
+
+}  // namespace
+
+// The request's configuration and, for every loaded contact, its force guess (the parent node's
+// forces) or else an even share of the weight of every floating body over the loaded vertices, as
+// an interior point (lambda > 0) of the cone coefficients. (Measured with bench/solver_bench:
+// starting instead from the least change of the even shares that balances the bodies at q_init
+// (E16-E17) took more iterations, 6/14/12 instead of 7/11/10 for 2/3/4 contacts warm started:
+// Ipopt's first steps then grow the forces far from there.)
+Eigen::VectorXd make_starting_point(NlpState& state) {
+  const PostureRequest& request = state.request;
+  const NlpLayout& layout = state.layout;
+  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(layout.n);
+  x0.head(layout.nq) = request.q_init;
+  double weight = 0.0;
+  for (const Entity& e : state.scene.system.entities())
+    if (e.floating()) weight += e.model->total_mass * state.scene.gravity.norm();
+  int vertices = 0;
+  for (const ForceBlock& block : layout.forces) vertices += block.num_vertices;
+  const double per_vertex = vertices > 0 ? weight / vertices : 0.0;
+  const double mu = state.options.friction;
+  const double cos_half = 1.0 / std::sqrt(1.0 + mu * mu);
+  state.set_x(x0.data());  // the generators' world directions at q_init
+  for (const ForceBlock& block : layout.forces) {
+    auto lambda = x0.segment(block.first_column, block.size());
+    const std::vector<Eigen::Vector3d>& guess = request.contacts[size_t(block.task)].force_guess_W;
+    if (int(guess.size()) == block.num_vertices) {
+      for (int j = 0; j < block.num_vertices; ++j)
+        lambda.segment(j * block.per_vertex, block.per_vertex) =
+            cone_coefficients(block, state.frames[size_t(block.task)], mu, guess[size_t(j)]);
+    } else if (block.bilateral) {
+      lambda.setZero();
+    } else {
+      lambda.setConstant(std::max(per_vertex / (block.per_vertex * cos_half), 1e-3));
+    }
+  }
+  state.set_x(x0.data());
+  return x0;
 }
 
 void PostureNlp::update(const double* x, bool new_x) {
@@ -238,33 +256,50 @@ void PostureNlp::lagrangian_gradient(NlpState& state, double obj_factor,
   out.noalias() += J_.transpose() * y;
 }
 
+namespace {
+
+// A deterministic pseudo-random number in [0, 1) for index i of stream `seed` (splitmix64): the
+// same on every platform, and without the regularity (i % 5 patterns) that once made a symmetric
+// probe hide a dependence.
+double generic_value(int i, int seed) {
+  uint64_t z = (uint64_t(uint32_t(seed)) << 32 | uint32_t(i)) + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return double(z >> 11) * 0x1.0p-53;
+}
+
+}  // namespace
+
 // A generic point: every joint off its neutral value by a different amount (inside its limits),
 // every force coefficient and multiplier nonzero, so that no dependence hides behind a zero factor.
-void PostureNlp::probe_point(Eigen::VectorXd* x, Eigen::VectorXd* y) const {
+void PostureNlp::probe_point(int seed, Eigen::VectorXd* x, Eigen::VectorXd* y) const {
   std::vector<double> lower(static_cast<size_t>(n())), upper(static_cast<size_t>(n()));
   variable_bounds(lower.data(), upper.data());
   const int nq = layout_.nq;
   x->resize(n());
   x->head(nq) = state_.scene.system.neutral_configuration();
   for (int k = 0; k < nq; ++k) {
-    const double moved = (*x)[k] + 0.05 + 0.01 * (k % 7);
+    const double moved = (*x)[k] + 0.03 + 0.05 * generic_value(k, seed);
     const double room = 0.1 * (upper[size_t(k)] - lower[size_t(k)]);
     (*x)[k] = std::clamp(moved, lower[size_t(k)] + room, upper[size_t(k)] - room);
   }
-  for (int i = nq; i < n(); ++i) (*x)[i] = 1.0 + 0.1 * (i % 5);
+  for (int i = nq; i < n(); ++i) (*x)[i] = 0.5 + generic_value(i, seed);
   y->resize(m_);
-  for (int r = 0; r < m_; ++r) (*y)[r] = (r % 2 ? -1.0 : 1.0) * (1.0 + 0.1 * (r % 3));
+  for (int r = 0; r < m_; ++r)
+    (*y)[r] = (r % 2 ? -1.0 : 1.0) * (0.5 + generic_value(n() + r, seed));
 }
 
 // The request with its values replaced by generic ones (same contacts, same shape): the structure
 // then depends on the shape alone, so that HessianCache returns what measuring would (a placement
 // angle of exactly 0 would hide a dependence and make the cached structure depend on which request
 // came first).
-PostureRequest PostureNlp::generic_request(const Eigen::VectorXd& q) const {
+PostureRequest PostureNlp::generic_request(const Eigen::VectorXd& q, int seed) const {
   PostureRequest generic = state_.request;
   generic.q_init = q;
   generic.q_ref = q;
-  for (int k = 0; k < q.size(); ++k) generic.q_ref[k] += 0.003 * (1 + k % 5);
+  for (int k = 0; k < q.size(); ++k)
+    generic.q_ref[k] += 0.003 * (1.0 + generic_value(k, seed + 100));
   for (ContactTask& task : generic.contacts) {
     if (task.placement) *task.placement = {0.011, -0.013, 0.017};
     if (task.placement_target) *task.placement_target = {0.019, 0.007, -0.023};
@@ -272,11 +307,38 @@ PostureRequest PostureNlp::generic_request(const Eigen::VectorXd& q) const {
   return generic;
 }
 
+// The analytic Hessian's structure: the entries nonzero at either of two generic points (an
+// entry that can be nonzero is exactly zero at a generic point only by coincidence).
+std::shared_ptr<const HessianStructure> PostureNlp::measure_analytic_structure() {
+  const int nq = layout_.nq;
+  std::vector<char> seen(size_t(n()) * size_t(n()), 0);
+  for (int seed : {1, 2}) {
+    Eigen::VectorXd x, y;
+    probe_point(seed, &x, &y);
+    const PostureRequest request = generic_request(x.head(nq), seed);
+    NlpState state(state_.scene, request, state_.options, layout_);
+    state.set_x(x.data());
+    analytic_hessian(state, 1.0, y, H_);
+    for (int j = 0; j < n(); ++j)
+      for (int i = j; i < n(); ++i)
+        if (H_(i, j) != 0.0) seen[size_t(i) * size_t(n()) + size_t(j)] = 1;
+  }
+  auto structure = std::make_shared<HessianStructure>();
+  for (int i = 0; i < n(); ++i)
+    for (int j = 0; j <= i; ++j)
+      if (seen[size_t(i) * size_t(n()) + size_t(j)]) {
+        structure->rows.push_back(i);
+        structure->cols.push_back(j);
+        structure->sources.push_back(HessianStructure::Source::Exact);
+      }
+  return structure;
+}
+
 std::shared_ptr<const HessianStructure> PostureNlp::measure_hessian_structure() {
   const int nq = layout_.nq, nl = n() - nq;
   Eigen::VectorXd x, y;
-  probe_point(&x, &y);
-  const PostureRequest request = generic_request(x.head(nq));
+  probe_point(1, &x, &y);
+  const PostureRequest request = generic_request(x.head(nq), 1);
   NlpState state(state_.scene, request, state_.options, layout_);
   state.set_x(x.data());
   lagrangian_gradient(state, 1.0, y, grad_);
@@ -328,6 +390,10 @@ std::shared_ptr<const HessianStructure> PostureNlp::measure_hessian_structure() 
 
 void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, const double* y_in,
                                 double* values) {
+  if (state_.options.hessian == HessianMode::Analytic) {
+    analytic_hessian_values(x, new_x, obj_factor, y_in, values);
+    return;
+  }
   update(x, new_x);
   const Eigen::Map<const Eigen::VectorXd> y(y_in, m_);
   const int nq = layout_.nq;
@@ -379,6 +445,27 @@ void PostureNlp::hessian_values(const double* x, bool new_x, double obj_factor, 
         break;
     }
   }
+}
+
+// Every block adds its rows' curvature weighted by its multipliers; the torque rows and the
+// objective's torque term leave weights for one pass over the loads (torque_hessian.h).
+void PostureNlp::analytic_hessian(NlpState& state, double obj_factor,
+                                  const Eigen::Ref<const Eigen::VectorXd>& y,
+                                  Eigen::Ref<Eigen::MatrixXd> H) const {
+  H.setZero();
+  for (Eigen::VectorXd& w : state.torque_weights) w.setZero();
+  objective_.add_hessian(state, obj_factor, H);
+  for (size_t b = 0; b < blocks_.size(); ++b)
+    blocks_[b]->add_hessian(state, y.segment(first_row_[b], blocks_[b]->rows()), H);
+  add_weighted_torque_hessian(state, H);
+}
+
+void PostureNlp::analytic_hessian_values(const double* x, bool new_x, double obj_factor,
+                                         const double* y, double* values) {
+  update(x, new_x);
+  analytic_hessian(state_, obj_factor, Eigen::Map<const Eigen::VectorXd>(y, m_), H_);
+  for (size_t k = 0; k < hessian_->rows.size(); ++k)
+    values[k] = H_(hessian_->rows[k], hessian_->cols[k]);
 }
 
 }  // namespace stanceplan

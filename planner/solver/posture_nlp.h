@@ -11,13 +11,20 @@
 
 namespace stanceplan {
 
+// The starting point of the program at the state's request: q_init and, for every loaded contact,
+// its force guess or an even share of the weight (leaves the state at that point).
+Eigen::VectorXd make_starting_point(NlpState& state);
+
 class PostureNlp {
  public:
   // active_pairs: indices into scene.collision->pairs() that enter the program (E20), with the
   // least distance each must keep (default: options.collision_margin).
+  // torque_dofs: per entity, the dofs whose E19 rows enter (PostureSolver's torque active set);
+  // nullptr: every dof with an effort limit.
   PostureNlp(const Scene& scene, const PostureRequest& request, const SolverOptions& options,
              std::vector<int> active_pairs, std::vector<double> pair_bounds = {},
-             HessianCache* hessian_cache = nullptr);
+             HessianCache* hessian_cache = nullptr,
+             const std::vector<std::vector<int>>* torque_dofs = nullptr);
 
   int n() const { return layout_.n; }
   int m() const { return m_; }
@@ -44,6 +51,8 @@ class PostureNlp {
   void hessian_structure(int* rows, int* cols) const;
   void hessian_values(const double* x, bool new_x, double obj_factor, const double* y,
                       double* values);
+  // The whole Hessian (n x n, both triangles) left by the last hessian_values, for tests.
+  const Eigen::MatrixXd& dense_hessian() const { return H_; }
   // The dense Jacobian (m x n), for tests.
   const Eigen::MatrixXd& dense_jacobian(const double* x, bool new_x);
 
@@ -63,14 +72,18 @@ class PostureNlp {
   void lagrangian_gradient(NlpState& state, double obj_factor,
                            const Eigen::Ref<const Eigen::VectorXd>& y,
                            Eigen::Ref<Eigen::VectorXd> out);
-  PostureRequest generic_request(const Eigen::VectorXd& q) const;
+  PostureRequest generic_request(const Eigen::VectorXd& q, int seed) const;
 
-  void make_starting_point();
-  Eigen::VectorXd cone_coefficients(const ForceBlock& block, const ContactFrames& frames,
-                                    const Eigen::Vector3d& f) const;
-  void probe_point(Eigen::VectorXd* x, Eigen::VectorXd* y) const;
+  void analytic_hessian_values(const double* x, bool new_x, double obj_factor, const double* y,
+                               double* values);
+  void probe_point(int seed, Eigen::VectorXd* x, Eigen::VectorXd* y) const;
   std::shared_ptr<const HessianStructure> measure_hessian_structure();
+  std::shared_ptr<const HessianStructure> measure_analytic_structure();
+  void analytic_hessian(NlpState& state, double obj_factor,
+                        const Eigen::Ref<const Eigen::VectorXd>& y,
+                        Eigen::Ref<Eigen::MatrixXd> H) const;
   HessianCache::Key hessian_key() const;
+  std::vector<std::vector<int>> torque_dofs_;  // empty: all
 
   std::shared_ptr<const HessianStructure> hessian_;
   Eigen::VectorXd x0_;  // the starting point

@@ -32,10 +32,11 @@ struct PostureRequest {
   Eigen::VectorXd q_ref;   // milestone configuration of the objective (E21); empty: q_init
 };
 
-// How Ipopt gets second derivatives: its limited-memory (L-BFGS) approximation, or the Hessian of
-// the Lagrangian from forward differences of the exact analytic gradient along the configuration
-// directions (the lambda-lambda block is exact: every constraint is linear in lambda).
-enum class HessianMode { LimitedMemory, FiniteDifference };
+// How Ipopt gets second derivatives: its limited-memory (L-BFGS) approximation; the Hessian of the
+// Lagrangian from forward differences of the exact analytic gradient along the configuration
+// directions (the lambda-lambda block exact: every constraint is linear in lambda); or the exact
+// analytic Hessian (second- and third-order kinematics, planner/solver/hessian_terms.h).
+enum class HessianMode { LimitedMemory, FiniteDifference, Analytic };
 
 struct SolverOptions {
   double friction = 1.0;    // Coulomb coefficient mu of every unilateral contact
@@ -47,8 +48,14 @@ struct SolverOptions {
   double w_placement = 10.0;
   double collision_margin = 0.005;          // E20: signed distance >= margin (m)
   double collision_active_distance = 0.05;  // pairs closer than this enter the program
-  int max_active_set_rounds = 4;  // re-solves when a pair outside the active set penetrates
-  HessianMode hessian = HessianMode::FiniteDifference;
+  int max_active_set_rounds =
+      4;  // re-solves when a pair or torque outside its active set is violated
+  // E19 rows enter the program only for joints whose torque at the starting point is at least this
+  // fraction of the effort limit (0: every row); a solution that exceeds a limit left out is solved
+  // again with it. Far-from-limit rows are dense (every joint above, every load): leaving them out
+  // makes the linear algebra cheaper (bench/solver_bench).
+  double torque_active_fraction = 0.5;
+  HessianMode hessian = HessianMode::Analytic;
   int max_iterations = 100;
   double tolerance = 1e-6;             // constraint violation and complementarity (Ipopt)
   double optimality_tolerance = 1e-4;  // Ipopt tol / dual_inf_tol (the objective is a regulariser)

@@ -21,14 +21,17 @@ namespace {
 // base quaternion (kinematics divide by its norm: every pose would be NaN, which the collision
 // library asserts on).
 std::string unusable_guess(const System& system, const PostureRequest& request) {
-  for (const auto& [name, q] : {std::pair{"q_init", &request.q_init}, std::pair{"q_ref", &request.q_ref}})
+  for (const auto& [name, q] :
+       {std::pair{"q_init", &request.q_init}, std::pair{"q_ref", &request.q_ref}})
     for (int i = 0; i < q->size(); ++i)
       if (!std::isfinite((*q)[i]))
-        return "the initial guess is not finite (" + std::string(name) + "[" + std::to_string(i) + "] = " +
-               std::to_string((*q)[i]) + ")";
+        return "the initial guess is not finite (" + std::string(name) + "[" + std::to_string(i) +
+               "] = " + std::to_string((*q)[i]) + ")";
   for (int e = 0; e < system.num_entities(); ++e)
-    if (system.entity(e).floating() && request.q_init.segment<4>(system.offset(e) + Entity::kBaseQuaternion).norm() < 1e-9)
-      return "the initial guess has a zero base quaternion (entity \"" + system.entity(e).name + "\")";
+    if (system.entity(e).floating() &&
+        request.q_init.segment<4>(system.offset(e) + Entity::kBaseQuaternion).norm() < 1e-9)
+      return "the initial guess has a zero base quaternion (entity \"" + system.entity(e).name +
+             "\")";
   return "";
 }
 
@@ -50,8 +53,8 @@ std::vector<double> pair_distances(const Scene& scene, const Eigen::VectorXd& q,
 
 // " (closest pair: robot/l_knee_p_link / env/chair at -0.004 m)" for the pair nearest to
 // violating the margin at q, or "" when none is closer than the margin.
-std::string closest_pair(const Scene& scene, const Eigen::VectorXd& q, const std::vector<bool>& excluded,
-                         double margin) {
+std::string closest_pair(const Scene& scene, const Eigen::VectorXd& q,
+                         const std::vector<bool>& excluded, double margin) {
   const std::vector<double> d = pair_distances(scene, q, excluded, margin);
   const auto worst = std::min_element(d.begin(), d.end());
   if (worst == d.end() || !(*worst < margin)) return "";
@@ -63,8 +66,8 @@ std::string closest_pair(const Scene& scene, const Eigen::VectorXd& q, const std
     return e.name + "/" + e.model->links[size_t(link.link)].name;
   };
   std::ostringstream out;
-  out << " (closest pair: " << name(pair.a) << " / " << name(pair.b) << " at " << std::fixed << std::setprecision(3)
-      << *worst << " m)";
+  out << " (closest pair: " << name(pair.a) << " / " << name(pair.b) << " at " << std::fixed
+      << std::setprecision(3) << *worst << " m)";
   return out.str();
 }
 
@@ -91,7 +94,8 @@ void record_residuals(PostureNlp& nlp, const Eigen::VectorXd& x, PostureResult& 
     }
   }
   double& limits = result.residuals["joint_limits"];
-  for (int i = 0; i < nlp.layout().nq; ++i) limits = std::max({limits, xl[i] - x[i], x[i] - xu[i], 0.0});
+  for (int i = 0; i < nlp.layout().nq; ++i)
+    limits = std::max({limits, xl[i] - x[i], x[i] - xu[i], 0.0});
   double& friction = result.residuals["friction"];
   for (int i = nlp.layout().nq; i < n; ++i) friction = std::max({friction, xl[i] - x[i], 0.0});
 }
@@ -102,11 +106,80 @@ void record_physics(PostureNlp& nlp, const PostureRequest& request, PostureResul
   for (size_t t = 0; t < request.contacts.size(); ++t) {
     const ContactFrames& f = state.frames[t];
     const Eigen::Vector3d d = f.O1 - f.O2;
-    result.placements.push_back({d.dot(f.x2), d.dot(f.y2), std::atan2(f.x1.dot(f.y2), f.x1.dot(f.x2))});
+    result.placements.push_back(
+        {d.dot(f.x2), d.dot(f.y2), std::atan2(f.x1.dot(f.y2), f.x1.dot(f.x2))});
     if (nlp.layout().force_block_of_task[t] < 0) continue;
-    for (size_t j = 0; j < f.p.size(); ++j) result.forces.push_back({int(t), int(j), f.p[j], f.f[j]});
+    for (size_t j = 0; j < f.p.size(); ++j)
+      result.forces.push_back({int(t), int(j), f.p[j], f.f[j]});
   }
   result.torques = state.tau;
+}
+
+// Per entity, the dofs with an effort limit whose |tau| / effort is at least `fraction`.
+std::vector<std::vector<int>> loaded_joints(const System& system,
+                                            const std::vector<Eigen::VectorXd>& tau,
+                                            double fraction) {
+  std::vector<std::vector<int>> dofs(size_t(system.num_entities()));
+  for (int e = 0; e < system.num_entities(); ++e) {
+    const Model& model = *system.entity(e).model;
+    if (system.entity(e).kind == EntityKind::Object || tau[size_t(e)].size() == 0) continue;
+    for (int k = 0; k < model.num_dofs(); ++k) {
+      const double effort = model.joints[model.dof_joints[k]].effort;
+      if (effort > 0.0 && std::abs(tau[size_t(e)][k]) >= fraction * effort)
+        dofs[size_t(e)].push_back(k);
+    }
+  }
+  return dofs;
+}
+
+// The torques at the program's starting point (q_init and the force guesses).
+std::vector<Eigen::VectorXd> starting_torques(const Scene& scene, const PostureRequest& request,
+                                              const SolverOptions& options) {
+  const NlpLayout layout(scene, request, options);
+  NlpState state(scene, request, options, layout);
+  make_starting_point(state);
+  state.ensure_torque_values();
+  return state.tau;
+}
+
+// Adds to `active` every dof in `wanted` it lacks; true when one was added.
+bool merge_dofs(std::vector<std::vector<int>>& active,
+                const std::vector<std::vector<int>>& wanted) {
+  bool added = false;
+  for (size_t e = 0; e < active.size(); ++e)
+    for (int k : wanted[e])
+      if (std::find(active[e].begin(), active[e].end(), k) == active[e].end()) {
+        active[e].push_back(k);
+        added = true;
+      }
+  for (std::vector<int>& dofs : active) std::sort(dofs.begin(), dofs.end());
+  return added;
+}
+
+// Worst |tau| / effort - 1 over every limited dof (0 when all are within their limits).
+double worst_torque_excess(const System& system, const std::vector<Eigen::VectorXd>& tau) {
+  double worst = 0.0;
+  for (int e = 0; e < system.num_entities(); ++e) {
+    const Model& model = *system.entity(e).model;
+    if (system.entity(e).kind == EntityKind::Object || size_t(e) >= tau.size() ||
+        tau[size_t(e)].size() == 0)
+      continue;
+    for (int k = 0; k < model.num_dofs(); ++k) {
+      const double effort = model.joints[model.dof_joints[k]].effort;
+      if (effort > 0.0) worst = std::max(worst, std::abs(tau[size_t(e)][k]) / effort - 1.0);
+    }
+  }
+  return worst;
+}
+
+// The forces of a result as the next round's force guesses.
+void guess_forces_from(const PostureResult& result, PostureRequest& request) {
+  for (const VertexForce& f : result.forces) {
+    std::vector<Eigen::Vector3d>& guess = request.contacts[size_t(f.contact)].force_guess_W;
+    if (guess.size() <= size_t(f.vertex))
+      guess.resize(size_t(f.vertex) + 1, Eigen::Vector3d::Zero());
+    guess[size_t(f.vertex)] = f.force_W;
+  }
 }
 
 }  // namespace
@@ -114,7 +187,8 @@ void record_physics(PostureNlp& nlp, const PostureRequest& request, PostureResul
 PostureSolver::PostureSolver(const Scene& scene, SolverOptions options)
     : scene_(scene), options_(std::move(options)) {
   if (options_.cone_generators < 3)
-    throw std::invalid_argument("cone_generators must be >= 3, got " + std::to_string(options_.cone_generators));
+    throw std::invalid_argument("cone_generators must be >= 3, got " +
+                                std::to_string(options_.cone_generators));
   if (!(options_.friction > 0.0))
     throw std::invalid_argument("friction must be > 0, got " + std::to_string(options_.friction));
 }
@@ -140,15 +214,17 @@ void PostureSolver::validate(const PostureRequest& request) const {
       return std::find(list.begin(), list.end(), s) != list.end();
     };
     if (in(smaller, r1) || in(larger, r1) || in(smaller, r2))
-      throw std::invalid_argument("surface " + scene_.surfaces.id(system, in(smaller, r2) ? r2 : r1) +
-                                  " is in two contacts (a contact's smaller surface s1 is in no other)");
+      throw std::invalid_argument(
+          "surface " + scene_.surfaces.id(system, in(smaller, r2) ? r2 : r1) +
+          " is in two contacts (a contact's smaller surface s1 is in no other)");
     smaller.push_back(r1);
     larger.push_back(r2);
     const Surface& s1 = scene_.surfaces.get(task.contact.s1);
     const Surface& s2 = scene_.surfaces.get(task.contact.s2);
     if (task.contact.s1.entity == task.contact.s2.entity && s1.link == s2.link)
       throw std::invalid_argument("contact " + scene_.surfaces.id(system, task.contact.s1) + " - " +
-                                  scene_.surfaces.id(system, task.contact.s2) + " joins two surfaces of one link");
+                                  scene_.surfaces.id(system, task.contact.s2) +
+                                  " joins two surfaces of one link");
   }
 }
 
@@ -195,11 +271,13 @@ PostureResult PostureSolver::solve(const PostureRequest& request) const {
   }
   PostureResult result = solve_once(request, options_);
   // No NaN reaches a plan: a "solved" result with a non-finite number in it is a failure.
-  if (const std::string part = result.non_finite_part(); result.status == PostureStatus::Solved && !part.empty()) {
+  if (const std::string part = result.non_finite_part();
+      result.status == PostureStatus::Solved && !part.empty()) {
     result.status = PostureStatus::NumericalFailure;
     result.message = "non-finite " + part + " in the solution (" + result.message + ")";
   }
-  if (result.status != PostureStatus::Solved && options_.diagnose_infeasibility) diagnose(request, result);
+  if (result.status != PostureStatus::Solved && options_.diagnose_infeasibility)
+    diagnose(request, result);
   return result;
 }
 
@@ -211,13 +289,16 @@ void PostureSolver::diagnose(const PostureRequest& request, PostureResult& resul
   } else if (scene_.collision) {
     relaxed = options_;
     relaxed.enforce_collisions = false;
-    if (solve_once(request, relaxed).status == PostureStatus::Solved) result.blocking_family = "collision";
+    if (solve_once(request, relaxed).status == PostureStatus::Solved)
+      result.blocking_family = "collision";
   }
   if (!result.blocking_family.empty())
-    result.message += "; infeasible because of " + result.blocking_family + " (solved without them)";
+    result.message +=
+        "; infeasible because of " + result.blocking_family + " (solved without them)";
 }
 
-PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const SolverOptions& options) const {
+PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
+                                        const SolverOptions& options) const {
   PostureRequest request = request_in;
   PostureResult result;
   const auto start = std::chrono::steady_clock::now();
@@ -226,7 +307,8 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
   std::vector<bool> excluded = excluded_pairs(request);
   const bool collisions = scene_.collision && options.enforce_collisions;
   if (collisions) {
-    initial_distance = pair_distances(scene_, request.q_init, excluded, options.collision_active_distance);
+    initial_distance =
+        pair_distances(scene_, request.q_init, excluded, options.collision_active_distance);
     for (size_t p = 0; p < initial_distance.size(); ++p)
       if (initial_distance[p] < options.collision_active_distance) active.push_back(int(p));
   }
@@ -236,15 +318,23 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
   // pair penetrating at the guess (a bad guess) must reach the full margin.
   auto bound_of = [&](int p) {
     const double d = initial_distance[p];
-    return d >= -1e-6 ? std::min(options.collision_margin, std::max(0.0, d)) : options.collision_margin;
+    return d >= -1e-6 ? std::min(options.collision_margin, std::max(0.0, d))
+                      : options.collision_margin;
   };
   auto bounds_of = [&](const std::vector<int>& pairs) {
     std::vector<double> bounds;
     for (int p : pairs) bounds.push_back(bound_of(p));
     return bounds;
   };
+  // E19 rows far from their limits at the start are left out until a solution exceeds them.
+  const bool torque_set = options.enforce_torque_limits && options.torque_active_fraction > 0.0;
+  std::vector<std::vector<int>> torque_dofs;
+  if (torque_set)
+    torque_dofs = loaded_joints(scene_.system, starting_torques(scene_, request, options),
+                                options.torque_active_fraction);
   for (int round = 0;; ++round) {
-    PostureNlp nlp(scene_, request, options, active, bounds_of(active), hessian_cache_.get());
+    PostureNlp nlp(scene_, request, options, active, bounds_of(active), hessian_cache_.get(),
+                   torque_set ? &torque_dofs : nullptr);
     const IpoptRun run = run_ipopt(nlp, options);
     result.iterations += run.iterations;
     result.status = run.status;
@@ -259,27 +349,40 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
     result.q = x.head(scene_.system.nq());
     nlp.state().set_x(x.data());
     record_physics(nlp, request, result);
-    if (run.status != PostureStatus::Solved || !collisions) break;
-    // Pairs outside the active set may have come closer than the margin: add them and re-solve.
-    const auto d = pair_distances(scene_, result.q, excluded, options.collision_margin);
-    double worst = 0.0;
-    size_t before = active.size();
-    for (size_t p = 0; p < d.size(); ++p) {
-      if (d[p] < bound_of(int(p)) - 1e-4 &&
-          std::find(active.begin(), active.end(), int(p)) == active.end())
-        active.push_back(int(p));
-      if (d[p] < 0) worst = std::max(worst, -d[p]);
+    const double torque_excess = worst_torque_excess(scene_.system, result.torques);
+    if (options.enforce_torque_limits)  // every limited joint, the rows left out included
+      result.residuals["torque_limits"] =
+          std::max(result.residuals["torque_limits"], torque_excess);
+    if (run.status != PostureStatus::Solved) break;
+    // Pairs outside the active set may have come closer than the margin: add them.
+    const size_t before = active.size();
+    if (collisions) {
+      const auto d = pair_distances(scene_, result.q, excluded, options.collision_margin);
+      double worst = 0.0;
+      for (size_t p = 0; p < d.size(); ++p) {
+        if (d[p] < bound_of(int(p)) - 1e-4 &&
+            std::find(active.begin(), active.end(), int(p)) == active.end())
+          active.push_back(int(p));
+        if (d[p] < 0) worst = std::max(worst, -d[p]);
+      }
+      result.residuals["collision"] = std::max(result.residuals["collision"], worst);
     }
-    result.residuals["collision"] = std::max(result.residuals["collision"], worst);
-    if (active.size() == before) break;
+    // Torques beyond a limit left out: add those rows, and the ones near their limits.
+    const bool torques_grew =
+        torque_set && torque_excess > options.tolerance &&
+        merge_dofs(torque_dofs, loaded_joints(scene_.system, result.torques, 0.9));
+    if (active.size() == before && !torques_grew) break;
     if (round + 1 >= options.max_active_set_rounds) {
       result.status = PostureStatus::Infeasible;
-      result.message = "collision: pairs still closer than the margin after " +
-                       std::to_string(round + 1) + " active-set rounds";
+      result.message =
+          std::string(active.size() != before ? "collision: pairs still closer than the margin"
+                                              : "torque_limits: joints still beyond their effort") +
+          " after " + std::to_string(round + 1) + " active-set rounds";
       break;
     }
     std::sort(active.begin(), active.end());
     request.q_init = result.q;
+    guess_forces_from(result, request);
   }
   if (result.q.size() == scene_.system.nq()) normalise_quaternions(scene_.system, result.q);
   if (result.status != PostureStatus::Solved && !result.residuals.empty()) {
@@ -287,7 +390,8 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in, const 
     if (collisions && result.worst_family() == "collision" && result.q.size() == scene_.system.nq())
       result.message += closest_pair(scene_, result.q, excluded, options.collision_margin);
   }
-  result.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

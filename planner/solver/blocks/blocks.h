@@ -18,6 +18,8 @@ class QuaternionNormBlock : public ConstraintBlock {
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   Eigen::Ref<Eigen::MatrixXd> H) const override;
 
  private:
   const System& system_;
@@ -35,6 +37,8 @@ class ContactGeometryBlock : public ConstraintBlock {
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   Eigen::Ref<Eigen::MatrixXd> H) const override;
 
  private:
   int task_;
@@ -53,6 +57,8 @@ class PolygonBlock : public ConstraintBlock {
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   Eigen::Ref<Eigen::MatrixXd> H) const override;
 
  private:
   int task_;
@@ -73,6 +79,8 @@ class EquilibriumBlock : public ConstraintBlock {
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   Eigen::Ref<Eigen::MatrixXd> H) const override;
 
  private:
   struct Received {
@@ -85,15 +93,18 @@ class EquilibriumBlock : public ConstraintBlock {
   std::vector<int> columns_;
 };
 
-// E18-E19: -1 <= tau_k / effort_k <= 1 for every dof of one robot with an effort limit.
+// E18-E19: -1 <= tau_k / effort_k <= 1 for every dof of one robot with an effort limit (or, with
+// `only`, for those of the listed dofs that have one: PostureSolver's torque active set).
 class TorqueLimitBlock : public ConstraintBlock {
  public:
-  TorqueLimitBlock(const NlpState& state, int entity);
+  TorqueLimitBlock(const NlpState& state, int entity, const std::vector<int>* only = nullptr);
   int rows() const override { return static_cast<int>(dofs_.size()); }
   void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   Eigen::Ref<Eigen::MatrixXd> H) const override;
   bool empty() const { return dofs_.empty(); }
 
  private:
@@ -113,6 +124,8 @@ class CollisionBlock : public ConstraintBlock {
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const override;
+  void add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   Eigen::Ref<Eigen::MatrixXd> H) const override;
 
  private:
   void update(NlpState& state) const;  // distances at the state's current x

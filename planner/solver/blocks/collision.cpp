@@ -4,7 +4,8 @@
 
 namespace stanceplan {
 
-CollisionBlock::CollisionBlock(const NlpState& state, std::vector<int> pairs, std::vector<double> lower_bounds)
+CollisionBlock::CollisionBlock(const NlpState& state, std::vector<int> pairs,
+                               std::vector<double> lower_bounds)
     : ConstraintBlock("collision"),
       system_(state.scene.system),
       model_(*state.scene.collision),
@@ -29,7 +30,8 @@ void CollisionBlock::row_columns(int r, std::vector<int>* columns) const {
 void CollisionBlock::update(NlpState& state) const {
   if (x_of_results_.size() == state.x.size() && x_of_results_ == state.x) return;
   work_.update(model_, state.data);
-  for (size_t i = 0; i < pairs_.size(); ++i) results_[i] = signed_distance(model_, work_, pairs_[i]);
+  for (size_t i = 0; i < pairs_.size(); ++i)
+    results_[i] = signed_distance(model_, work_, pairs_[i]);
   x_of_results_ = state.x;
 }
 
@@ -45,5 +47,10 @@ void CollisionBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) co
     J.row(r).head(system_.nq()) = gradient_;  // E48
   }
 }
+
+// Signed distance is only piecewise smooth (its witness features jump, e.g. between parallel
+// faces): its rows get no curvature, as in Gauss-Newton.
+void CollisionBlock::add_hessian(NlpState&, const Eigen::Ref<const Eigen::VectorXd>&,
+                                 Eigen::Ref<Eigen::MatrixXd>) const {}
 
 }  // namespace stanceplan

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include "planner/solver/hessian_terms.h"
 
 #include "planner/solver/blocks/blocks.h"
 
@@ -39,7 +40,7 @@ void ContactGeometryBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd>
   const Eigen::Vector3d d = f.O1 - f.O2;
   g[0] = f.z1.dot(f.x2);  // E8: z1 = -z2, as two orthogonality conditions
   g[1] = f.z1.dot(f.y2);
-  g[2] = d.dot(f.z2);     // E9: s1's origin on s2's plane
+  g[2] = d.dot(f.z2);  // E9: s1's origin on s2's plane
   g[3] = f.z1.dot(f.z2);
   if (!fixed_) return;
   const double c = std::cos(placement_.theta), s = std::sin(placement_.theta);
@@ -77,6 +78,34 @@ void ContactGeometryBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd>
   dot_s1_s2(6, f.J_x1, f.x1, f.J_x2, f.x2, -s);
   dot_s1_s2(7, f.J_x1, f.x1, f.J_x2, f.x2, c);
   dot_s1_s2(7, f.J_x1, f.x1, f.J_y2, f.y2, s);
+}
+
+// The rows are dot products of s1's and s2's frame vectors: the weighted sum collapses into three
+// of them, z1 . W, (O1 - O2) . B and x1 . V, with W, B and V combinations of s2's axes.
+void ContactGeometryBlock::add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                       Eigen::Ref<Eigen::MatrixXd> H) const {
+  state.ensure_jacobians();
+  const ContactFrames& f = state.frames[task_];
+  const ContactConstants& k = state.constants[task_];
+  const int n2 = static_cast<int>(f.J_x2.cols());
+  auto J_W = state.hessian_scratch[0].leftCols(n2);
+  auto J_B = state.hessian_scratch[1].leftCols(n2);
+  const Eigen::Vector3d W = y[0] * f.x2 + y[1] * f.y2 + y[3] * f.z2;
+  J_W = y[0] * f.J_x2 + y[1] * f.J_y2 + y[3] * f.J_z2;
+  add_vector_dot_curvature(state, k.e1, k.l1, f.z1, f.J_z1, k.e2, k.l2, W, J_W, 1.0, H);
+  Eigen::Vector3d B = y[2] * f.z2;
+  J_B = y[2] * f.J_z2;
+  if (fixed_) {
+    B += y[4] * f.x2 + y[5] * f.y2;
+    J_B += y[4] * f.J_x2 + y[5] * f.J_y2;
+  }
+  add_offset_dot_curvature(state, task_, f.O1, f.J_O1, B, J_B, 1.0, H);
+  if (!fixed_) return;
+  const double c = std::cos(placement_.theta), s = std::sin(placement_.theta);
+  const double on_y2 = c * y[6] + s * y[7], on_x2 = -s * y[6] + c * y[7];
+  const Eigen::Vector3d V = on_y2 * f.y2 + on_x2 * f.x2;
+  J_W = on_y2 * f.J_y2 + on_x2 * f.J_x2;
+  add_vector_dot_curvature(state, k.e1, k.l1, f.x1, f.J_x1, k.e2, k.l2, V, J_W, 1.0, H);
 }
 
 }  // namespace stanceplan

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include "planner/solver/hessian_terms.h"
 
 #include "planner/solver/blocks/blocks.h"
 
@@ -36,7 +37,7 @@ void EquilibriumBlock::row_columns(int, std::vector<int>* columns) const {
 void EquilibriumBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const {
   const double mass = state.scene.system.entity(entity_).model->total_mass;
   const Eigen::Vector3d weight = mass * state.scene.gravity;
-  Eigen::Vector3d force = weight;                           // E16
+  Eigen::Vector3d force = weight;                             // E16
   Eigen::Vector3d moment = state.com[entity_].cross(weight);  // E17, about the world origin
   for (const Received& r : received_) {
     const ContactFrames& f = state.frames[r.task];
@@ -64,6 +65,26 @@ void EquilibriumBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) 
       state.add_entity_term(e1, f.J_p[r.vertex], w * f.f[r.vertex].cross(e), J.row(3 + i));
       state.add_force_term(r.task, r.vertex, w * e.cross(f.p[r.vertex]), J.row(3 + i));
     }
+  }
+}
+
+// y_f . (sum s f_j) + y_m . (sum s p_j x f_j + C x m g), all times 1 / (m |g|):
+// y_m . (p x f) = p^T M f with M = -[y_m]x.
+void EquilibriumBlock::add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                   Eigen::Ref<Eigen::MatrixXd> H) const {
+  state.ensure_jacobians();
+  const double mass = state.scene.system.entity(entity_).model->total_mass;
+  const Eigen::Vector3d weight = mass * state.scene.gravity;
+  const Eigen::Vector3d y_f = scale_ * y.head<3>(), y_m = scale_ * y.tail<3>();
+  add_com_curvature(state, entity_, weight.cross(y_m), H);  // C . (m g x y_m)
+  for (const Received& r : received_) {
+    const ContactFrames& f = state.frames[r.task];
+    const ContactConstants& k = state.constants[r.task];
+    const Eigen::Vector3d& p = f.p[r.vertex];
+    const Eigen::Matrix3d M = -r.sign * cross_matrix(y_m);
+    add_force_curvature(state, r.task, r.vertex, r.sign * y_f + M.transpose() * p, H);
+    add_point_curvature(state, k.e1, k.l1, p, M * f.f[r.vertex], H);
+    add_force_cross_curvature(state, k.e1, f.J_p[r.vertex], r.task, r.vertex, M, H);
   }
 }
 

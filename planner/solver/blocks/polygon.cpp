@@ -1,4 +1,5 @@
 #include <algorithm>
+#include "planner/solver/hessian_terms.h"
 
 #include "planner/contact/polygon.h"
 #include "planner/solver/blocks/blocks.h"
@@ -59,6 +60,23 @@ void PolygonBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) cons
       state.add_entity_term(k.e2, f.J_x2, nx * d, J.row(r));
       state.add_entity_term(k.e2, f.J_y2, ny * d, J.row(r));
     }
+}
+
+// Per vertex j the rows sum to (p_j - O2) . (a_x x2 + a_y y2), a = sum_e y_je n_e.
+void PolygonBlock::add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
+                               Eigen::Ref<Eigen::MatrixXd> H) const {
+  state.ensure_jacobians();
+  const ContactFrames& f = state.frames[task_];
+  const int edges = static_cast<int>(edge_normals_.size());
+  auto J_b = state.hessian_scratch[0].leftCols(f.J_x2.cols());
+  for (int j = 0; j < vertices1_; ++j) {
+    Eigen::Vector2d a = Eigen::Vector2d::Zero();
+    for (int e = 0; e < edges; ++e) a += y[j * edges + e] * edge_normals_[e];
+    if (a.isZero()) continue;
+    const Eigen::Vector3d b = a.x() * f.x2 + a.y() * f.y2;
+    J_b = a.x() * f.J_x2 + a.y() * f.J_y2;
+    add_offset_dot_curvature(state, task_, f.p[j], f.J_p[j], b, J_b, 1.0, H);
+  }
 }
 
 }  // namespace stanceplan

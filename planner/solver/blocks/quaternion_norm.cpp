@@ -31,4 +31,12 @@ void QuaternionNormBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> 
   }
 }
 
+void QuaternionNormBlock::add_hessian(NlpState&, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                      Eigen::Ref<Eigen::MatrixXd> H) const {
+  for (int r = 0; r < rows(); ++r) {
+    const int first = system_.offset(entities_[r]) + Entity::kBaseQuaternion;
+    H.block<4, 4>(first, first).diagonal().array() += 2.0 * y[r];
+  }
+}
+
 }  // namespace stanceplan

@@ -23,7 +23,9 @@ SolverOptions default_options() {
   return options;
 }
 
-double robot_mass(const Scene& scene) { return scene.system.entity(0).model->total_mass; }
+double robot_mass(const Scene& scene) {
+  return scene.system.entity(0).model->total_mass;
+}
 
 Eigen::Vector3d robot_com(const Scene& scene, const Eigen::VectorXd& q) {
   const Entity& robot = scene.system.entity(0);
@@ -35,7 +37,8 @@ Eigen::Vector3d robot_com(const Scene& scene, const Eigen::VectorXd& q) {
 // True when p (x, y) is inside the convex hull of the points (x, y), by the winding of the hull.
 bool inside_convex_hull(const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& p) {
   std::vector<Eigen::Vector2d> pts = points;
-  std::sort(pts.begin(), pts.end(), [](auto& a, auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  std::sort(pts.begin(), pts.end(),
+            [](auto& a, auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
   };
@@ -56,8 +59,8 @@ bool inside_convex_hull(const std::vector<Eigen::Vector2d>& points, const Eigen:
 }
 
 // The physics a checker verifies (PLAN_FORMAT.md), from the result alone.
-void expect_physically_valid(const Scene& scene, const PostureRequest& request, const PostureResult& r,
-                             double friction) {
+void expect_physically_valid(const Scene& scene, const PostureRequest& request,
+                             const PostureResult& r, double friction) {
   const double mass = robot_mass(scene), weight = mass * 9.81;
   Eigen::Vector3d force = Eigen::Vector3d(0, 0, -weight);
   Eigen::Vector3d moment = robot_com(scene, r.q).cross(Eigen::Vector3d(0, 0, -weight));
@@ -92,7 +95,8 @@ class HumanoidFlat : public ::testing::Test {
 
   PostureRequest standing_request() const {
     PostureRequest request;
-    request.contacts = {task(*scene_, "robot/l_sole", "env/floor"), task(*scene_, "robot/r_sole", "env/floor")};
+    request.contacts = {task(*scene_, "robot/l_sole", "env/floor"),
+                        task(*scene_, "robot/r_sole", "env/floor")};
     request.q_init = test::standing_configuration(*scene_);
     return request;
   }
@@ -161,7 +165,8 @@ TEST_F(HumanoidFlat, Case1AddingTheRightHandOnTheWall) {
   request.q_init[7 + model.find_dof("r_shoulder_p")] = -1.4;
   request.q_init[7 + model.find_dof("r_wrist_p")] = -1.2;
   const PostureResult result = solver.solve(request);
-  ASSERT_EQ(result.status, PostureStatus::Solved) << result.message << " iterations " << result.iterations;
+  ASSERT_EQ(result.status, PostureStatus::Solved)
+      << result.message << " iterations " << result.iterations;
   for (const VertexForce& f : result.forces) EXPECT_NE(f.contact, 2);  // the hand is unloaded
   // Every palm vertex on the wall plane and inside its polygon.
   const Surface& palm = scene_->surfaces.get(request.contacts[2].contact.s1);
@@ -174,7 +179,10 @@ TEST_F(HumanoidFlat, Case1AddingTheRightHandOnTheWall) {
   forward_kinematics(env, Eigen::VectorXd(), env_data);
   const Eigen::Isometry3d T_WS2 = env_data.T_WL[wall.link] * wall.T_LS;
   Eigen::Vector2d lo = wall.vertices_S[0], hi = wall.vertices_S[0];
-  for (const auto& v : wall.vertices_S) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
+  for (const auto& v : wall.vertices_S) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
   for (const Eigen::Vector3d& v_L : palm.vertices_L()) {
     const Eigen::Vector3d p_S2 = T_WS2.inverse() * (data.T_WL[palm.link] * v_L);
     EXPECT_NEAR(p_S2.z(), 0.0, 1e-6);
@@ -199,7 +207,8 @@ TEST_F(HumanoidFlat, AContactOutOfReachIsInfeasibleNotAnException) {
   request.q_init = standing.q;
   const PostureResult result = solver.solve(request);
   EXPECT_NE(result.status, PostureStatus::Solved);
-  EXPECT_LE(result.iterations, default_options().max_iterations * default_options().max_active_set_rounds);
+  EXPECT_LE(result.iterations,
+            default_options().max_iterations * default_options().max_active_set_rounds);
   EXPECT_GT(result.residuals.at("contact_geometry"), 1e-3);
 }
 
@@ -219,7 +228,8 @@ TEST_F(HumanoidFlat, WeakJointsMakeACrouchInfeasibleBecauseOfTorqueLimits) {
   for (double scale : {1.0, 0.05}) {
     const Scene scene = crouching(scale);
     PostureRequest request;
-    request.contacts = {task(scene, "robot/l_sole", "env/floor"), task(scene, "robot/r_sole", "env/floor")};
+    request.contacts = {task(scene, "robot/l_sole", "env/floor"),
+                        task(scene, "robot/r_sole", "env/floor")};
     request.q_init = test::standing_configuration(scene);
     const Model& model = *scene.system.entity(0).model;
     request.q_init[2] = 0.8;
@@ -238,7 +248,47 @@ TEST_F(HumanoidFlat, WeakJointsMakeACrouchInfeasibleBecauseOfTorqueLimits) {
     EXPECT_NE(result.status, PostureStatus::Solved);
     EXPECT_EQ(result.blocking_family, "torque_limits") << result.message;
     EXPECT_NE(result.message.find("infeasible because of torque_limits (solved without them)"),
-              std::string::npos) << result.message;
+              std::string::npos)
+        << result.message;
+  }
+}
+
+// E19 rows far from their limits at the start are left out (SolverOptions::torque_active_fraction)
+// and added when a solution exceeds them. With the efforts cut to 12 % the crouch's knee limit
+// binds: whatever the fraction (every row, half, or nearly none at the start), the solution keeps
+// every joint within its limit, reports the worst ratio over all joints, and has a joint at it.
+TEST_F(HumanoidFlat, TorqueRowsLeftOutAtTheStartStillHoldAtTheSolution) {
+  Scene scene = test::humanoid_scene("wall");
+  auto model = std::make_shared<Model>(*scene.system.entity(0).model);
+  for (Joint& joint : model->joints) {
+    joint.effort *= 0.12;
+    if (joint.name == "l_knee_p" || joint.name == "r_knee_p") joint.lower = 1.2;
+  }
+  const_cast<Entity&>(scene.system.entity(0)).model = model;
+  PostureRequest request;
+  request.contacts = {task(scene, "robot/l_sole", "env/floor"),
+                      task(scene, "robot/r_sole", "env/floor")};
+  request.q_init = test::standing_configuration(scene);
+  request.q_init[2] = 0.8;
+  for (const char* side : {"l_", "r_"}) {
+    request.q_init[7 + model->find_dof(std::string(side) + "hip_p")] = -0.6;
+    request.q_init[7 + model->find_dof(std::string(side) + "knee_p")] = 1.2;
+    request.q_init[7 + model->find_dof(std::string(side) + "ankle_p")] = -0.6;
+  }
+  for (double fraction : {0.0, 0.5, 0.999}) {
+    SolverOptions options = default_options();
+    options.torque_active_fraction = fraction;
+    const PostureResult r = PostureSolver(scene, options).solve(request);
+    ASSERT_EQ(r.status, PostureStatus::Solved) << "fraction " << fraction << ": " << r.message;
+    double worst = 0.0;
+    for (int k = 0; k < model->num_dofs(); ++k) {
+      const Joint& joint = model->joints[model->dof_joints[k]];
+      EXPECT_LE(std::abs(r.torques[0][k]), joint.effort * (1 + 1e-6))
+          << joint.name << ", fraction " << fraction;
+      worst = std::max(worst, std::abs(r.torques[0][k]) / joint.effort);
+    }
+    EXPECT_GT(worst, 0.999) << "fraction " << fraction << ": a limit binds";
+    EXPECT_LE(r.residuals.at("torque_limits"), 1e-6) << "fraction " << fraction;
   }
 }
 
@@ -287,7 +337,8 @@ TEST_F(HumanoidFlat, TouchingThroughOneContactPenetratesThroughNoOtherPair) {
   const PostureResult result = solver.solve(request);
   ASSERT_EQ(result.status, PostureStatus::Solved) << result.message;
   expect_physically_valid(scene, request, result, 1.0);
-  EXPECT_GE(closest_pair(scene, solver, request, result.q, &checked), options.collision_margin - 1e-4);
+  EXPECT_GE(closest_pair(scene, solver, request, result.q, &checked),
+            options.collision_margin - 1e-4);
   EXPECT_EQ(checked, static_cast<int>(scene.collision->pairs().size()) - 2);
 }
 
@@ -314,14 +365,20 @@ TEST_F(HumanoidFlat, TwoThreadsGiveTheSameResultsAsOne) {
   }
   std::vector<PostureResult> serial(50), parallel(50);
   for (int i = 0; i < 50; ++i) serial[i] = solver.solve(requests[i]);
-  std::thread t1([&] { for (int i = 0; i < 50; i += 2) parallel[i] = solver.solve(requests[i]); });
-  std::thread t2([&] { for (int i = 1; i < 50; i += 2) parallel[i] = solver.solve(requests[i]); });
+  std::thread t1([&] {
+    for (int i = 0; i < 50; i += 2) parallel[i] = solver.solve(requests[i]);
+  });
+  std::thread t2([&] {
+    for (int i = 1; i < 50; i += 2) parallel[i] = solver.solve(requests[i]);
+  });
   t1.join();
   t2.join();
   for (int i = 0; i < 50; ++i) {
     EXPECT_EQ(serial[i].status, parallel[i].status) << i;
     ASSERT_EQ(serial[i].q.size(), parallel[i].q.size());
-    EXPECT_EQ(0, std::memcmp(serial[i].q.data(), parallel[i].q.data(), sizeof(double) * serial[i].q.size())) << i;
+    EXPECT_EQ(0, std::memcmp(serial[i].q.data(), parallel[i].q.data(),
+                             sizeof(double) * serial[i].q.size()))
+        << i;
   }
 }
 
@@ -333,7 +390,8 @@ TEST_F(HumanoidFlat, IpoptDerivativeCheckerFindsNoError) {
   request.q_init[7 + scene_->system.entity(0).model->find_dof("l_knee_p")] = 0.3;
   PostureNlp nlp(*scene_, request, options, {});
   const IpoptRun run = run_ipopt(nlp, options);
-  EXPECT_NE(run.derivative_report.find("No errors detected by derivative checker"), std::string::npos)
+  EXPECT_NE(run.derivative_report.find("No errors detected by derivative checker"),
+            std::string::npos)
       << run.derivative_report.substr(0, 3000);
 }
 
@@ -348,7 +406,9 @@ TEST_F(HumanoidFlat, MalformedRequestsThrowWithAPreciseMessage) {
     solver.solve(request);
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "surface robot/l_sole is in two contacts (a contact's smaller surface s1 is in no other)");
+    EXPECT_STREQ(
+        e.what(),
+        "surface robot/l_sole is in two contacts (a contact's smaller surface s1 is in no other)");
   }
 }
 
