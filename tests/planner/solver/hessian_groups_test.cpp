@@ -42,7 +42,9 @@ struct Outcome {
 };
 
 Outcome check_scenario(const std::string& file) {
-  const Scenario s = load_scenario(test::source_path("scenarios/" + file));
+  Scenario s = load_scenario(test::source_path("scenarios/" + file));
+  s.solver.hessian = HessianMode::FiniteDifference;  // the differenced Hessian (the analytic one
+                                                     // is the default: analytic_hessian_test.cpp)
   const PostureRequest request = s.loaded_request(s.initial_stance, s.initial_configuration);
   PostureNlp nlp(s.scene, request, s.solver, {});  // no collision rows
   const int n = nlp.n(), nq = nlp.layout().nq;
