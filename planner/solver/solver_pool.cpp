@@ -129,6 +129,8 @@ std::string serialize(const PostureRequest& request) {
     w.pod<uint8_t>(t.loaded);
     w.placement(t.placement);
     w.placement(t.placement_target);
+    w.pod<uint64_t>(t.force_guess_W.size());
+    for (const Eigen::Vector3d& f : t.force_guess_W) w.vec3(f);
   }
   w.vector(request.q_init);
   w.vector(request.q_ref);
@@ -150,6 +152,8 @@ PostureRequest deserialize_request(const std::string& bytes) {
     t.loaded = r.pod<uint8_t>();
     t.placement = r.placement();
     t.placement_target = r.placement();
+    const auto guesses = r.pod<uint64_t>();
+    for (uint64_t k = 0; k < guesses; ++k) t.force_guess_W.push_back(r.vec3());
     request.contacts.push_back(t);
   }
   request.q_init = r.vector();

@@ -43,7 +43,8 @@ void ContactGeometryBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd>
   g[2] = d.dot(f.z2);  // E9: s1's origin on s2's plane
   g[3] = f.z1.dot(f.z2);
   if (!fixed_) return;
-  const double c = std::cos(placement_.theta), s = std::sin(placement_.theta);
+  const double theta = state.request.contacts[task_].placement->theta;  // see jacobian()
+  const double c = std::cos(theta), s = std::sin(theta);
   g[4] = d.dot(f.x2);  // E10-E11: placement
   g[5] = d.dot(f.y2);
   g[6] = c * f.x1.dot(f.y2) - s * f.x1.dot(f.x2);  // E12-E13: sin(theta_1 - theta_c) = 0
@@ -71,7 +72,12 @@ void ContactGeometryBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd>
   offset_dot(2, f.J_z2, f.z2);
   dot_s1_s2(3, f.J_z1, f.z1, f.J_z2, f.z2, 1.0);
   if (!fixed_) return;
-  const double c = std::cos(placement_.theta), s = std::sin(placement_.theta);
+  // The angle of the state's request, not the one this block was made with: the Hessian's
+  // structure is measured on a generic request (PostureNlp::generic_request), where an angle of
+  // exactly 0 (s = 0) would otherwise hide the -s terms and make the cached structure depend on
+  // which request came first (results then depended on the thread count).
+  const double theta = state.request.contacts[task_].placement->theta;
+  const double c = std::cos(theta), s = std::sin(theta);
   offset_dot(4, f.J_x2, f.x2);
   offset_dot(5, f.J_y2, f.y2);
   dot_s1_s2(6, f.J_x1, f.x1, f.J_y2, f.y2, c);

@@ -6,6 +6,7 @@
 // are fewer than the columns.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <random>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "planner/solver/hessian_groups.h"
 #include "planner/solver/posture_nlp.h"
 #include "tests/support/paths.h"
+#include "tests/support/scenes.h"
 
 namespace stanceplan {
 namespace {
@@ -124,6 +126,32 @@ TEST(HessianGroups, ColumnsSharingAForceRowGetTheirOwnEvaluations) {
   pattern[1 * n + 2] = 0;
   const HessianGroups h = make_hessian_groups(pattern, n, nq);
   EXPECT_EQ(h.groups.size(), 1u);
+}
+
+// The structure is measured on a generic request, so it is the same for every request of one
+// shape (HessianCache hands it to all of them): two soles on the floor at fixed placements, one
+// at angle 0 (where sin = 0 once hid terms of E12-E13), the other at 0.3 rad.
+TEST(HessianGroups, TheStructureDoesNotDependOnAFixedPlacementsAngle) {
+  const Scene scene = test::humanoid_scene("flat_ground");
+  auto nlp_at = [&](double theta) {
+    PostureRequest r;
+    r.contacts = {test::task(scene, "robot/l_sole", "env/floor"),
+                  test::task(scene, "robot/r_sole", "env/floor")};
+    r.contacts[0].placement = Placement{0.0, 0.1, theta};
+    r.contacts[1].placement = Placement{0.0, -0.1, theta};
+    r.q_init = test::standing_configuration(scene);
+    return std::make_unique<PostureNlp>(scene, r, SolverOptions{}, std::vector<int>{});
+  };
+  const auto zero = nlp_at(0.0), turned = nlp_at(0.3);
+  ASSERT_EQ(zero->hessian_nnz(), turned->hessian_nnz());
+  std::vector<int> rows0(size_t(zero->hessian_nnz())), cols0(rows0.size());
+  std::vector<int> rows1(rows0.size()), cols1(rows0.size());
+  zero->hessian_structure(rows0.data(), cols0.data());
+  turned->hessian_structure(rows1.data(), cols1.data());
+  EXPECT_EQ(rows0, rows1);
+  EXPECT_EQ(cols0, cols1);
+  EXPECT_EQ(zero->hessian_groups().groups, turned->hessian_groups().groups);
+  EXPECT_EQ(zero->hessian_groups().pattern, turned->hessian_groups().pattern);
 }
 
 }  // namespace

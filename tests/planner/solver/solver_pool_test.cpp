@@ -18,7 +18,8 @@ class Pool : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { scene_ = new Scene(test::humanoid_scene("flat_ground")); }
   static void TearDownTestSuite() { delete scene_; }
-  // Standing from six different guesses, one with a fixed placement and one unloaded contact.
+  // Standing from six different guesses, one with force guesses, one with a fixed placement and
+  // one unloaded contact.
   static std::vector<PostureRequest> requests() {
     std::vector<PostureRequest> out;
     for (int i = 0; i < 6; ++i) {
@@ -29,6 +30,9 @@ class Pool : public ::testing::Test {
         r.contacts[1].placement = Placement{-1.49, -0.085, 0.0};
         r.contacts[1].loaded = false;
       }
+      if (i == 3)  // warm-started forces at the four vertices of either sole
+        for (ContactTask& t : r.contacts)
+          t.force_guess_W.assign(4, Eigen::Vector3d(0.5, -0.2, 40.0));
       r.q_init = test::standing_configuration(*scene_);
       r.q_init[0] = 0.01 * i;
       out.push_back(r);
@@ -60,6 +64,7 @@ TEST_F(Pool, TheWireFormatRoundTrips) {
       EXPECT_EQ(back.contacts[i].contact, r.contacts[i].contact);
       EXPECT_EQ(back.contacts[i].loaded, r.contacts[i].loaded);
       EXPECT_EQ(back.contacts[i].placement.has_value(), r.contacts[i].placement.has_value());
+      EXPECT_EQ(back.contacts[i].force_guess_W, r.contacts[i].force_guess_W);
     }
     EXPECT_EQ(back.q_init, r.q_init);
     const PostureResult result = solver.solve(r);
