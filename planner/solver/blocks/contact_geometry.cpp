@@ -107,7 +107,8 @@ void ContactGeometryBlock::add_hessian(NlpState& state, const Eigen::Ref<const E
   }
   add_offset_dot_curvature(state, task_, f.O1, f.J_O1, B, J_B, 1.0, H);
   if (!fixed_) return;
-  const double c = std::cos(placement_.theta), s = std::sin(placement_.theta);
+  const double theta = state.request.contacts[task_].placement->theta;  // see jacobian()
+  const double c = std::cos(theta), s = std::sin(theta);
   const double on_y2 = c * y[6] + s * y[7], on_x2 = -s * y[6] + c * y[7];
   const Eigen::Vector3d V = on_y2 * f.y2 + on_x2 * f.x2;
   J_W = on_y2 * f.J_y2 + on_x2 * f.J_x2;
