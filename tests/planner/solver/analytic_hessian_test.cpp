@@ -13,20 +13,13 @@
 
 #include "planner/io/scenario.h"
 #include "planner/solver/posture_nlp.h"
+#include "tests/support/lagrangian.h"
 #include "tests/support/paths.h"
 
 namespace stanceplan {
 namespace {
 
 enum class Use { Realise, Add, Remove };
-
-// Gradient of obj_factor f + y^T g at x, every family but collision (which gets no curvature).
-Eigen::VectorXd lagrangian_gradient(PostureNlp& nlp, const Eigen::VectorXd& x, double obj_factor,
-                                    const Eigen::VectorXd& y) {
-  Eigen::VectorXd grad(nlp.n());
-  nlp.objective_gradient(x.data(), true, grad.data());
-  return obj_factor * grad + nlp.dense_jacobian(x.data(), false).transpose() * y;
-}
 
 PostureRequest request_for(const Scenario& s, Use use) {
   PostureRequest request = s.loaded_request(s.initial_stance, s.initial_configuration);
@@ -49,15 +42,10 @@ void check(const std::string& file, Use use, unsigned seed) {
   PostureNlp nlp(s.scene, request, s.solver, {});  // no collision rows
   const int n = nlp.n(), nq = nlp.layout().nq;
 
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::VectorXd x(n);
-  nlp.starting_point(x.data());
-  for (int i = 0; i < nq; ++i) x[i] += 0.03 * u(rng);  // moves root quaternions off the sphere
-  for (int i = nq; i < n; ++i) x[i] += 0.5 * std::abs(u(rng));
-  Eigen::VectorXd y(nlp.m());
-  for (int i = 0; i < nlp.m(); ++i) y[i] = u(rng);
-  const double obj_factor = 0.7;
+  const test::LagrangianPoint point = test::random_lagrangian_point(nlp, seed, 0.03);
+  const Eigen::VectorXd& x = point.x;
+  const Eigen::VectorXd& y = point.y;
+  const double obj_factor = point.obj_factor;
 
   std::vector<double> values(size_t(nlp.hessian_nnz()));
   nlp.hessian_values(x.data(), true, obj_factor, y.data(), values.data());
@@ -69,8 +57,8 @@ void check(const std::string& file, Use use, unsigned seed) {
     Eigen::VectorXd xp = x, xm = x;
     xp[k] += h;
     xm[k] -= h;
-    H_fd.col(k) = (lagrangian_gradient(nlp, xp, obj_factor, y) -
-                   lagrangian_gradient(nlp, xm, obj_factor, y)) /
+    H_fd.col(k) = (test::lagrangian_gradient(nlp, xp, obj_factor, y) -
+                   test::lagrangian_gradient(nlp, xm, obj_factor, y)) /
                   (2.0 * h);
   }
   const double scale = std::max(1.0, H_fd.cwiseAbs().maxCoeff());

@@ -13,19 +13,12 @@
 #include "planner/io/scenario.h"
 #include "planner/solver/hessian_groups.h"
 #include "planner/solver/posture_nlp.h"
+#include "tests/support/lagrangian.h"
 #include "tests/support/paths.h"
 #include "tests/support/scenes.h"
 
 namespace stanceplan {
 namespace {
-
-// Gradient of obj_factor f + y^T g at x, every family but collision (which gets no curvature).
-Eigen::VectorXd lagrangian_gradient(PostureNlp& nlp, const Eigen::VectorXd& x, double obj_factor,
-                                    const Eigen::VectorXd& y) {
-  Eigen::VectorXd grad(nlp.n());
-  nlp.objective_gradient(x.data(), true, grad.data());
-  return obj_factor * grad + nlp.dense_jacobian(x.data(), false).transpose() * y;
-}
 
 // The lambda-lambda block is exact (not differenced): the reference takes it from the program.
 Eigen::MatrixXd dense_from(const PostureNlp& nlp, const std::vector<double>& values) {
@@ -51,28 +44,23 @@ Outcome check_scenario(const std::string& file) {
   PostureNlp nlp(s.scene, request, s.solver, {});  // no collision rows
   const int n = nlp.n(), nq = nlp.layout().nq;
 
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::VectorXd x(n);
-  nlp.starting_point(x.data());
-  for (int i = 0; i < nq; ++i) x[i] += 0.02 * u(rng);
-  for (int i = nq; i < n; ++i) x[i] += 0.5 * std::abs(u(rng));
-  Eigen::VectorXd y(nlp.m());
-  for (int i = 0; i < nlp.m(); ++i) y[i] = u(rng);
-  const double obj_factor = 0.7;
+  const test::LagrangianPoint point = test::random_lagrangian_point(nlp, 7, 0.02);
+  const Eigen::VectorXd& x = point.x;
+  const Eigen::VectorXd& y = point.y;
+  const double obj_factor = point.obj_factor;
 
   std::vector<double> values(size_t(nlp.hessian_nnz()));
   nlp.hessian_values(x.data(), true, obj_factor, y.data(), values.data());
   const Eigen::MatrixXd H_sparse = dense_from(nlp, values);
 
   // Reference: one column per evaluation, forward differences of the same gradient.
-  const Eigen::VectorXd g0 = lagrangian_gradient(nlp, x, obj_factor, y);
+  const Eigen::VectorXd g0 = test::lagrangian_gradient(nlp, x, obj_factor, y);
   Eigen::MatrixXd H(n, nq);
   for (int k = 0; k < nq; ++k) {
     Eigen::VectorXd xk = x;
     const double h = 1e-7 * std::max(1.0, std::abs(x[k]));
     xk[k] += h;
-    H.col(k) = (lagrangian_gradient(nlp, xk, obj_factor, y) - g0) / h;
+    H.col(k) = (test::lagrangian_gradient(nlp, xk, obj_factor, y) - g0) / h;
   }
   double scale = 0.0;
   for (int j = 0; j < nq; ++j)
