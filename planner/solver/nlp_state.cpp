@@ -140,6 +140,7 @@ void NlpState::set_x(const double* x_in) {
   for (int e = 0; e < system.num_entities(); ++e)
     com[e] = center_of_mass(system.entity(e), data[e]);
   jacobians_ready_ = false;
+  force_jacobians_ready_ = false;
   torque_values_ready_ = false;
   torques_ready_ = false;
 }
@@ -164,18 +165,27 @@ void NlpState::ensure_jacobians() {
       point_jacobian(E1, data[c.e1], c.l1, c.v1_L[j], f.J_p[j]);
     for (size_t k = 0; k < c.U_L2.size(); ++k)
       vector_jacobian(E2, data[c.e2], c.l2, c.U_L2[k], f.J_U[k]);
+  }
+  for (int e = 0; e < system.num_entities(); ++e)
+    center_of_mass_jacobian(system.entity(e), data[e], J_com[e]);
+  jacobians_ready_ = true;
+}
+
+void NlpState::ensure_force_jacobians() {
+  if (force_jacobians_ready_) return;
+  ensure_jacobians();
+  for (size_t t = 0; t < frames.size(); ++t) {
     const int b = layout.force_block_of_task[t];
     if (b < 0 || layout.forces[b].bilateral) continue;
     const ForceBlock& block = layout.forces[b];
+    ContactFrames& f = frames[t];
     for (int j = 0; j < block.num_vertices; ++j) {
       f.J_f[j].setZero();
       for (int k = 0; k < block.per_vertex; ++k)
         f.J_f[j] += x[block.first_column + j * block.per_vertex + k] * f.J_U[k];
     }
   }
-  for (int e = 0; e < system.num_entities(); ++e)
-    center_of_mass_jacobian(system.entity(e), data[e], J_com[e]);
-  jacobians_ready_ = true;
+  force_jacobians_ready_ = true;
 }
 
 void NlpState::add_entity_term(int entity, const Eigen::MatrixXd& J, const Eigen::Vector3d& c,

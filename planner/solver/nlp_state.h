@@ -35,7 +35,7 @@ struct ContactFrames {
   Eigen::MatrixXd J_O1, J_x1, J_y1, J_z1, J_O2, J_x2, J_y2, J_z2;
   std::vector<Eigen::MatrixXd> J_p, J_U;
   // d f_j / d(configuration of e2) = sum_k lambda_k J_U[k] (loaded unilateral contacts; zero for a
-  // bilateral one, whose force components are variables themselves).
+  // bilateral one, whose force components are variables themselves); ensure_force_jacobians().
   std::vector<Eigen::MatrixXd> J_f;
 };
 
@@ -44,10 +44,11 @@ class NlpState {
   NlpState(const Scene& scene, const PostureRequest& request, const SolverOptions& options,
            const NlpLayout& layout);
 
-  void set_x(const double* x);  // kinematics, frames, forces
-  void ensure_jacobians();      // frame/vertex/generator/CoM Jacobians at the current x
-  void ensure_torque_values();  // tau only
-  void ensure_torques();        // tau and dtau/dx (calls ensure_jacobians)
+  void set_x(const double* x);    // kinematics, frames, forces
+  void ensure_jacobians();        // frame/vertex/generator/CoM Jacobians at the current x
+  void ensure_force_jacobians();  // ContactFrames::J_f (the analytic Hessian only)
+  void ensure_torque_values();    // tau only
+  void ensure_torques();          // tau and dtau/dx (calls ensure_jacobians)
 
   // row.segment(offset(entity), nq) += c^T J for a 3 x nq Jacobian J over `entity`'s segment.
   void add_entity_term(int entity, const Eigen::MatrixXd& J, const Eigen::Vector3d& c,
@@ -86,6 +87,7 @@ class NlpState {
   void for_each_load(LoadVisitor visit);
 
   bool jacobians_ready_ = false;
+  bool force_jacobians_ready_ = false;
   bool torque_values_ready_ = false;
   bool torques_ready_ = false;
   // Per entity and link: the dofs of the movable joints above the link (the only torque rows a

@@ -453,6 +453,7 @@ void PostureNlp::analytic_hessian(NlpState& state, double obj_factor,
                                   const Eigen::Ref<const Eigen::VectorXd>& y,
                                   Eigen::Ref<Eigen::MatrixXd> H) const {
   H.setZero();
+  state.ensure_force_jacobians();
   for (Eigen::VectorXd& w : state.torque_weights) w.setZero();
   objective_.add_hessian(state, obj_factor, H);
   for (size_t b = 0; b < blocks_.size(); ++b)

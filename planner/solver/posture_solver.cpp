@@ -115,20 +115,31 @@ void record_physics(PostureNlp& nlp, const PostureRequest& request, PostureResul
   result.torques = state.tau;
 }
 
+// Calls visit(entity, dof, |tau| / effort) for every dof of a robot with an effort limit (the
+// rows of TorqueLimitBlock).
+template <class Visit>
+void for_each_limited_joint(const System& system, const std::vector<Eigen::VectorXd>& tau,
+                            Visit visit) {
+  for (int e = 0; e < system.num_entities(); ++e) {
+    const Model& model = *system.entity(e).model;
+    if (system.entity(e).kind == EntityKind::Object || size_t(e) >= tau.size() ||
+        tau[size_t(e)].size() == 0)
+      continue;
+    for (int k = 0; k < model.num_dofs(); ++k) {
+      const double effort = model.joints[model.dof_joints[k]].effort;
+      if (effort > 0.0) visit(e, k, std::abs(tau[size_t(e)][k]) / effort);
+    }
+  }
+}
+
 // Per entity, the dofs with an effort limit whose |tau| / effort is at least `fraction`.
 std::vector<std::vector<int>> loaded_joints(const System& system,
                                             const std::vector<Eigen::VectorXd>& tau,
                                             double fraction) {
   std::vector<std::vector<int>> dofs(size_t(system.num_entities()));
-  for (int e = 0; e < system.num_entities(); ++e) {
-    const Model& model = *system.entity(e).model;
-    if (system.entity(e).kind == EntityKind::Object || tau[size_t(e)].size() == 0) continue;
-    for (int k = 0; k < model.num_dofs(); ++k) {
-      const double effort = model.joints[model.dof_joints[k]].effort;
-      if (effort > 0.0 && std::abs(tau[size_t(e)][k]) >= fraction * effort)
-        dofs[size_t(e)].push_back(k);
-    }
-  }
+  for_each_limited_joint(system, tau, [&](int e, int k, double ratio) {
+    if (ratio >= fraction) dofs[size_t(e)].push_back(k);
+  });
   return dofs;
 }
 
@@ -159,16 +170,8 @@ bool merge_dofs(std::vector<std::vector<int>>& active,
 // Worst |tau| / effort - 1 over every limited dof (0 when all are within their limits).
 double worst_torque_excess(const System& system, const std::vector<Eigen::VectorXd>& tau) {
   double worst = 0.0;
-  for (int e = 0; e < system.num_entities(); ++e) {
-    const Model& model = *system.entity(e).model;
-    if (system.entity(e).kind == EntityKind::Object || size_t(e) >= tau.size() ||
-        tau[size_t(e)].size() == 0)
-      continue;
-    for (int k = 0; k < model.num_dofs(); ++k) {
-      const double effort = model.joints[model.dof_joints[k]].effort;
-      if (effort > 0.0) worst = std::max(worst, std::abs(tau[size_t(e)][k]) / effort - 1.0);
-    }
-  }
+  for_each_limited_joint(system, tau,
+                         [&](int, int, double ratio) { worst = std::max(worst, ratio - 1.0); });
   return worst;
 }
 
