@@ -2,15 +2,19 @@
 // base of every floating entity shifted by one of eight offsets in x or y (1 and 2 cm), the plan
 // searched from there (the root solve brings the robots back onto their initial contacts). A plan
 // that is found only from the exact guess of the scenario file depends on solver round-off, not on
-// the task. Counter `success` is the fraction of the eight that found a plan (1 = robust). Run:
+// the task. Counter `success` is the fraction of the eight that found a plan (1 = robust);
+// STANCEPLAN_VERBOSE=1 prints each run's nodes and solver calls. Run:
 //   build/bench/robustness_bench --benchmark_filter=sit_desk
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "bench/scenario_list.h"
+#include "bench/solver_switches.h"
 #include "planner/io/scenario.h"
 #include "planner/search/stance_search.h"
 
@@ -22,10 +26,11 @@ constexpr std::array<std::array<double, 2>, 8> kOffsets = {
 
 void plan_perturbed(benchmark::State& state, const std::string& name) {
   const std::string path = bench::scenario_path(name);
-  int found = 0, tried = 0;
+  int found = 0, tried = 0, calls = 0;
   for (auto _ : state) {
     for (const auto& offset : kOffsets) {
       Scenario scenario = load_scenario(path);
+      bench::apply_solver_switches(scenario.solver);
       const System& system = scenario.scene.system;
       for (int e = 0; e < system.num_entities(); ++e) {
         if (!system.entity(e).floating()) continue;
@@ -34,13 +39,21 @@ void plan_perturbed(benchmark::State& state, const std::string& name) {
       }
       SearchOptions options = scenario.search;
       options.threads = 1;
-      found += StanceSearch(scenario, options).run().status == PlanStatus::Found;
+      const SearchResult result = StanceSearch(scenario, options).run();
+      found += result.status == PlanStatus::Found;
+      calls += result.solver_calls;
+      if (std::getenv("STANCEPLAN_VERBOSE"))
+        std::fprintf(stderr, "%s offset (%g, %g): %s, %d nodes, %d solver calls\n", name.c_str(),
+                     offset[0], offset[1],
+                     result.status == PlanStatus::Found ? "found" : "not found",
+                     result.nodes_expanded, result.solver_calls);
       ++tried;
     }
   }
   state.counters["success"] = tried > 0 ? double(found) / tried : 0.0;
   state.counters["found"] = found;
   state.counters["tried"] = tried;
+  state.counters["solver_calls"] = calls;  // over the eight
 }
 
 const auto registered = bench::register_scenarios(plan_perturbed);

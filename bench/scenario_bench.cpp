@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench/scenario_list.h"
+#include "bench/solver_switches.h"
 #include "planner/io/scenario.h"
 #include "planner/search/stance_search.h"
 
@@ -17,7 +18,8 @@ namespace stanceplan {
 namespace {
 
 void plan_scenario(benchmark::State& state, const std::string& name) {
-  const Scenario scenario = load_scenario(bench::scenario_path(name));
+  Scenario scenario = load_scenario(bench::scenario_path(name));
+  bench::apply_solver_switches(scenario.solver);
   SearchOptions options = scenario.search;
   options.threads = static_cast<int>(state.range(0));
   SearchResult result;

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "bench/solver_switches.h"
 #include "planner/solver/posture_nlp.h"
 #include "planner/solver/posture_solver.h"
 #include "tests/support/scenes.h"
@@ -40,31 +41,10 @@ PostureRequest request(int contacts) {
   return r;
 }
 
-// STANCEPLAN_IPOPT="name=value,name=value" passes Ipopt options through (for experiments).
+// The solver's options with the experiment switches of bench/solver_switches.h.
 SolverOptions options() {
   SolverOptions o;
-  if (const char* h = std::getenv("STANCEPLAN_HESSIAN")) {
-    const std::string mode = h;
-    if (mode == "lbfgs") o.hessian = HessianMode::LimitedMemory;
-    if (mode == "fd") o.hessian = HessianMode::FiniteDifference;
-    if (mode == "analytic") o.hessian = HessianMode::Analytic;
-  }
-  if (std::getenv("STANCEPLAN_NO_TORQUE")) o.w_torque = 0.0;  // experiment: without E24
-  if (std::getenv("STANCEPLAN_NO_TORQUE_LIMITS")) o.enforce_torque_limits = false;  // without E19
-  if (const char* f = std::getenv("STANCEPLAN_TORQUE_ACTIVE"))
-    o.torque_active_fraction = std::atof(f);
-  if (const char* env = std::getenv("STANCEPLAN_IPOPT")) {
-    std::string text = env;
-    size_t start = 0;
-    while (start < text.size()) {
-      const size_t end = std::min(text.find(',', start), text.size());
-      const std::string item = text.substr(start, end - start);
-      const size_t eq = item.find('=');
-      if (eq != std::string::npos)
-        o.ipopt_options.emplace_back(item.substr(0, eq), item.substr(eq + 1));
-      start = end + 1;
-    }
-  }
+  bench::apply_solver_switches(o);
   return o;
 }
 

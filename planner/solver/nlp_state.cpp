@@ -99,6 +99,7 @@ NlpState::NlpState(const Scene& scene_, const PostureRequest& request_,
   for (const Entity& e : system.entities()) max_nq = std::max(max_nq, e.nq());
   for (Eigen::MatrixXd& J : hessian_scratch) J.setZero(3, max_nq);
   gradient_scratch.setZero(layout.n);
+  torque_gram.setZero(layout.n, layout.n);
   for (const Entity& e : system.entities())
     torque_weights.push_back(Eigen::VectorXd::Zero(e.model->num_dofs()));
 }

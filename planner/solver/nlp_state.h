@@ -78,6 +78,7 @@ class NlpState {
   std::array<Eigen::MatrixXd, 4> hessian_scratch;
   Eigen::RowVectorXd gradient_scratch;  // 1 x n
   std::vector<Eigen::VectorXd> torque_weights;
+  Eigen::MatrixXd torque_gram;  // n x n, lower triangle: (dtau/dx)^T (dtau/dx) of the objective
 
  private:
   void add_load(int entity, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f,

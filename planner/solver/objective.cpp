@@ -70,11 +70,17 @@ void Objective::add_hessian(NlpState& state, double factor, Eigen::Ref<Eigen::Ma
   H.diagonal().tail(n - nq).array() += factor * 2.0 * o.w_force;      // E23
   if (o.w_torque > 0.0) {                                             // E24
     state.ensure_torques();
+    // 2 w3 (dtau/dx)^T (dtau/dx): its lower triangle by rank updates (half the product), mirrored.
+    Eigen::MatrixXd& gram = state.torque_gram;
+    gram.setZero();
     for (size_t e = 0; e < state.tau.size(); ++e) {
       if (state.tau[e].size() == 0) continue;
       state.torque_weights[e] += (factor * 2.0 * o.w_torque) * state.tau[e];
-      H.noalias() += (factor * 2.0 * o.w_torque) * state.dtau_dx[e].transpose() * state.dtau_dx[e];
+      gram.selfadjointView<Eigen::Lower>().rankUpdate(state.dtau_dx[e].transpose(),
+                                                      factor * 2.0 * o.w_torque);
     }
+    H.triangularView<Eigen::Lower>() += gram;
+    H.triangularView<Eigen::StrictlyUpper>() += gram.transpose();
   }
   if (targeted_tasks_.empty()) return;
   state.ensure_jacobians();

@@ -12,7 +12,8 @@ namespace stanceplan {
 PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
                        const SolverOptions& options, std::vector<int> active_pairs,
                        std::vector<double> pair_bounds, HessianCache* hessian_cache,
-                       const std::vector<std::vector<int>>* torque_dofs)
+                       const std::vector<std::vector<int>>* torque_dofs,
+                       const std::vector<std::vector<int>>* polygon_rows)
     : layout_(scene, request, options),
       state_(scene, request, options, layout_),
       objective_(state_) {
@@ -23,7 +24,9 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
   add(std::make_unique<QuaternionNormBlock>(system));
   for (int t = 0; t < static_cast<int>(request.contacts.size()); ++t) {
     add(std::make_unique<ContactGeometryBlock>(state_, t));
-    if (!request.contacts[t].placement) add(std::make_unique<PolygonBlock>(state_, t));
+    if (!request.contacts[t].placement)
+      add(std::make_unique<PolygonBlock>(state_, t,
+                                         polygon_rows ? &(*polygon_rows)[size_t(t)] : nullptr));
   }
   for (int e = 0; e < system.num_entities(); ++e) {
     const Entity& entity = system.entity(e);
@@ -59,6 +62,7 @@ PostureNlp::PostureNlp(const Scene& scene, const PostureRequest& request,
   x_step_.setZero(layout_.n);
   x0_ = make_starting_point(state_);
   if (torque_dofs) torque_dofs_ = *torque_dofs;
+  if (polygon_rows) polygon_rows_ = *polygon_rows;
   if (options.hessian == HessianMode::LimitedMemory) return;
   const HessianCache::Key key = hessian_key();
   if (hessian_cache) hessian_ = hessian_cache->find(key);
@@ -82,10 +86,12 @@ HessianCache::Key PostureNlp::hessian_key() const {
   int smooth_rows = m_;  // the collision block, when there is one, comes last
   if (!blocks_.empty() && blocks_.back()->family() == "collision") smooth_rows = first_row_.back();
   key.push_back(smooth_rows);
-  for (const std::vector<int>& dofs : torque_dofs_) {  // which torque rows, not only how many
-    key.push_back(-1);
-    key.insert(key.end(), dofs.begin(), dofs.end());
-  }
+  // Which rows, not only how many (separators -1 and -2 keep the two lists apart).
+  for (int list = 0; list < 2; ++list)
+    for (const std::vector<int>& rows : list == 0 ? torque_dofs_ : polygon_rows_) {
+      key.push_back(-1 - list);
+      key.insert(key.end(), rows.begin(), rows.end());
+    }
   for (size_t k = 0; k < rows_.size() && rows_[k] < smooth_rows; ++k) {
     key.push_back(rows_[k]);
     key.push_back(cols_[k]);
@@ -156,11 +162,12 @@ Eigen::VectorXd cone_coefficients(const ForceBlock& block, const ContactFrames& 
 }  // namespace
 
 // The request's configuration and, for every loaded contact, its force guess (the parent node's
-// forces) or else an even share of the weight of every floating body over the loaded vertices, as
-// an interior point (lambda > 0) of the cone coefficients. (Measured with bench/solver_bench:
-// starting instead from the least change of the even shares that balances the bodies at q_init
-// (E16-E17) took more iterations, 6/14/12 instead of 7/11/10 for 2/3/4 contacts warm started:
-// Ipopt's first steps then grow the forces far from there.)
+// forces, or the balanced forces PostureSolver computes at q_init: force_balance.h) or else an
+// even share of the weight of every floating body over the loaded vertices, as an interior point
+// (lambda > 0) of the cone coefficients. (The least change of the even shares that balances the
+// bodies took more iterations, 6/14/12 instead of 7/11/10 for 2/3/4 contacts in session 4's
+// bench/solver_bench: Ipopt's first steps then grow the forces far from there; the least-cost
+// balance of force_balance.h does not.)
 Eigen::VectorXd make_starting_point(NlpState& state) {
   const PostureRequest& request = state.request;
   const NlpLayout& layout = state.layout;

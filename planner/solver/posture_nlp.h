@@ -21,10 +21,13 @@ class PostureNlp {
   // least distance each must keep (default: options.collision_margin).
   // torque_dofs: per entity, the dofs whose E19 rows enter (PostureSolver's torque active set);
   // nullptr: every dof with an effort limit.
+  // polygon_rows: per contact, the rows of its PolygonBlock that enter (the polygon active set);
+  // nullptr: every row.
   PostureNlp(const Scene& scene, const PostureRequest& request, const SolverOptions& options,
              std::vector<int> active_pairs, std::vector<double> pair_bounds = {},
              HessianCache* hessian_cache = nullptr,
-             const std::vector<std::vector<int>>* torque_dofs = nullptr);
+             const std::vector<std::vector<int>>* torque_dofs = nullptr,
+             const std::vector<std::vector<int>>* polygon_rows = nullptr);
 
   int n() const { return layout_.n; }
   int m() const { return m_; }
@@ -83,7 +86,8 @@ class PostureNlp {
                         const Eigen::Ref<const Eigen::VectorXd>& y,
                         Eigen::Ref<Eigen::MatrixXd> H) const;
   HessianCache::Key hessian_key() const;
-  std::vector<std::vector<int>> torque_dofs_;  // empty: all
+  std::vector<std::vector<int>> torque_dofs_;
+  std::vector<std::vector<int>> polygon_rows_;  // empty: all
 
   std::shared_ptr<const HessianStructure> hessian_;
   Eigen::VectorXd x0_;  // the starting point

@@ -55,6 +55,15 @@ struct SolverOptions {
   // again with it. Far-from-limit rows are dense (every joint above, every load): leaving them out
   // makes the linear algebra cheaper (bench/solver_bench).
   double torque_active_fraction = 0.5;
+  // The polygon rows (a vertex of s1 inside an edge of s2) of a loaded contact with a free
+  // placement enter only when the vertex is nearer than this to the edge's line at the starting
+  // point (m; INFINITY: every row); a solution with a vertex beyond an edge left out is solved
+  // again with it. A foot far inside the floor needs none. Case 1's added (unloaded) contact keeps
+  // every row.
+  double polygon_active_distance = 0.1;
+  // Without force guesses, start from the forces that balance the bodies at q_init at least cost
+  // (force_balance.h) rather than from even shares of the weight.
+  bool balance_starting_forces = true;
   HessianMode hessian = HessianMode::Analytic;
   int max_iterations = 100;
   double tolerance = 1e-6;  // constraint violation (Ipopt constr_viol_tol): every physical residual

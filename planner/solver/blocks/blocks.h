@@ -48,11 +48,12 @@ class ContactGeometryBlock : public ConstraintBlock {
 };
 
 // Case 1 relaxation of E10-E11: every vertex of s1 inside s2's convex polygon, as linear
-// inequalities in s2's plane (one per vertex of s1 and edge of s2).
+// inequalities in s2's plane (one per vertex of s1 and edge of s2, row j * edges + e). `only`: the
+// rows that enter (PostureSolver's polygon active set); nullptr: every row.
 class PolygonBlock : public ConstraintBlock {
  public:
-  PolygonBlock(const NlpState& state, int task);
-  int rows() const override { return static_cast<int>(vertices1_ * edge_normals_.size()); }
+  PolygonBlock(const NlpState& state, int task, const std::vector<int>* only = nullptr);
+  int rows() const override { return static_cast<int>(rows_.size()); }
   void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
@@ -61,8 +62,11 @@ class PolygonBlock : public ConstraintBlock {
                    Eigen::Ref<Eigen::MatrixXd> H) const override;
 
  private:
+  struct Row {
+    int vertex, edge;
+  };
   int task_;
-  int vertices1_;
+  std::vector<Row> rows_;
   std::vector<Eigen::Vector2d> edge_normals_;  // inward unit normals of s2's edges, s2's plane
   std::vector<double> edge_offsets_;           // n_e . a_e
   std::vector<int> columns_;

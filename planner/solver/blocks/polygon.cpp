@@ -6,10 +6,10 @@
 
 namespace stanceplan {
 
-PolygonBlock::PolygonBlock(const NlpState& state, int task)
+PolygonBlock::PolygonBlock(const NlpState& state, int task, const std::vector<int>* only)
     : ConstraintBlock("polygon"), task_(task) {
   const ContactConstants& c = state.constants[task];
-  vertices1_ = static_cast<int>(c.v1_L.size());
+  const int vertices1 = static_cast<int>(c.v1_L.size());
   const auto& poly = c.v2_S;
   const int n = static_cast<int>(poly.size());
   for (int e = 0; e < n; ++e) {
@@ -17,6 +17,10 @@ PolygonBlock::PolygonBlock(const NlpState& state, int task)
     edge_normals_.push_back(inward);
     edge_offsets_.push_back(inward.dot(poly[e]));
   }
+  for (int j = 0; j < vertices1; ++j)
+    for (int e = 0; e < n; ++e)
+      if (!only || std::find(only->begin(), only->end(), j * n + e) != only->end())
+        rows_.push_back({j, e});
   append_link_columns(state.scene.system, c.e1, c.l1, &columns_);
   append_link_columns(state.scene.system, c.e2, c.l2, &columns_);
   sort_unique(&columns_);
@@ -36,42 +40,40 @@ void PolygonBlock::row_columns(int, std::vector<int>* columns) const {
 // of edge e of s2.
 void PolygonBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const {
   const ContactFrames& f = state.frames[task_];
-  const int edges = static_cast<int>(edge_normals_.size());
-  for (int j = 0; j < vertices1_; ++j)
-    for (int e = 0; e < edges; ++e) {
-      const Eigen::Vector3d w = edge_normals_[e].x() * f.x2 + edge_normals_[e].y() * f.y2;
-      g[j * edges + e] = (f.p[j] - f.O2).dot(w) - edge_offsets_[e];
-    }
+  for (int r = 0; r < rows(); ++r) {
+    const auto [j, e] = rows_[r];
+    const Eigen::Vector3d w = edge_normals_[e].x() * f.x2 + edge_normals_[e].y() * f.y2;
+    g[r] = (f.p[j] - f.O2).dot(w) - edge_offsets_[e];
+  }
 }
 
 void PolygonBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) const {
   state.ensure_jacobians();
   const ContactFrames& f = state.frames[task_];
   const ContactConstants& k = state.constants[task_];
-  const int edges = static_cast<int>(edge_normals_.size());
-  for (int j = 0; j < vertices1_; ++j)
-    for (int e = 0; e < edges; ++e) {
-      const int r = j * edges + e;
-      const double nx = edge_normals_[e].x(), ny = edge_normals_[e].y();
-      const Eigen::Vector3d w = nx * f.x2 + ny * f.y2;
-      const Eigen::Vector3d d = f.p[j] - f.O2;
-      state.add_entity_term(k.e1, f.J_p[j], w, J.row(r));
-      state.add_entity_term(k.e2, f.J_O2, -w, J.row(r));
-      state.add_entity_term(k.e2, f.J_x2, nx * d, J.row(r));
-      state.add_entity_term(k.e2, f.J_y2, ny * d, J.row(r));
-    }
+  for (int r = 0; r < rows(); ++r) {
+    const auto [j, e] = rows_[r];
+    const double nx = edge_normals_[e].x(), ny = edge_normals_[e].y();
+    const Eigen::Vector3d w = nx * f.x2 + ny * f.y2;
+    const Eigen::Vector3d d = f.p[j] - f.O2;
+    state.add_entity_term(k.e1, f.J_p[j], w, J.row(r));
+    state.add_entity_term(k.e2, f.J_O2, -w, J.row(r));
+    state.add_entity_term(k.e2, f.J_x2, nx * d, J.row(r));
+    state.add_entity_term(k.e2, f.J_y2, ny * d, J.row(r));
+  }
 }
 
-// Per vertex j the rows sum to (p_j - O2) . (a_x x2 + a_y y2), a = sum_e y_je n_e.
+// Per vertex j the rows sum to (p_j - O2) . (a_x x2 + a_y y2), a = sum_e y_je n_e (a vertex's
+// rows are consecutive).
 void PolygonBlock::add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
                                Eigen::Ref<Eigen::MatrixXd> H) const {
   state.ensure_jacobians();
   const ContactFrames& f = state.frames[task_];
-  const int edges = static_cast<int>(edge_normals_.size());
   auto J_b = state.hessian_scratch[0].leftCols(f.J_x2.cols());
-  for (int j = 0; j < vertices1_; ++j) {
+  for (int r = 0; r < rows();) {
+    const int j = rows_[r].vertex;
     Eigen::Vector2d a = Eigen::Vector2d::Zero();
-    for (int e = 0; e < edges; ++e) a += y[j * edges + e] * edge_normals_[e];
+    for (; r < rows() && rows_[r].vertex == j; ++r) a += y[r] * edge_normals_[rows_[r].edge];
     if (a.isZero()) continue;
     const Eigen::Vector3d b = a.x() * f.x2 + a.y() * f.y2;
     J_b = a.x() * f.J_x2 + a.y() * f.J_y2;

@@ -292,6 +292,53 @@ TEST_F(HumanoidFlat, TorqueRowsLeftOutAtTheStartStillHoldAtTheSolution) {
   }
 }
 
+// Polygon rows (a sole vertex inside an edge of the floor, case 1's E10-E11 relaxation) of
+// vertices far from their edges at the start are left out (SolverOptions::polygon_active_distance)
+// and added when a solution crosses them. On a 0.7 m slab, the milestone 0.4 m ahead pulls the
+// standing robot (soles 0.2 m from the front edge: no row enters) over the edge: the first round's
+// solution leaves the slab, the second holds the soles on its edge, where every row kept gives
+// the same posture.
+TEST(PolygonActiveSet, RowsLeftOutAtTheStartStillHoldAtTheSolution) {
+  SceneSpec spec;
+  EntitySpec ledge;
+  ledge.name = "env";
+  ledge.kind = EntityKind::Environment;
+  ledge.urdf = test::source_path("tests/data/ledge/ledge.urdf");
+  ledge.surfaces = test::source_path("tests/data/ledge/ledge.surfaces.yaml");
+  spec.entities = {test::humanoid_spec(), ledge};
+  const Scene scene = build_scene(spec);
+  PostureRequest request;
+  request.contacts = {task(scene, "robot/l_sole", "env/floor"),
+                      task(scene, "robot/r_sole", "env/floor")};
+  request.q_init = test::standing_configuration(scene);
+  request.q_ref = request.q_init;
+  request.q_ref[0] += 0.4;
+  SolverOptions every_row = default_options();
+  every_row.polygon_active_distance = INFINITY;
+  const PostureResult reference = PostureSolver(scene, every_row).solve(request);
+  const PostureResult result = PostureSolver(scene, default_options()).solve(request);
+  for (const PostureResult* r : {&reference, &result}) {
+    ASSERT_EQ(r->status, PostureStatus::Solved) << r->message;
+    double front = -INFINITY;
+    for (const VertexForce& f : r->forces) front = std::max(front, f.point_W.x());
+    EXPECT_NEAR(front, 0.35, 1e-6);  // on the slab's front edge
+    EXPECT_LE(r->residuals.at("polygon"), 1e-6);
+    expect_physically_valid(scene, request, *r, 1.0);
+  }
+  EXPECT_LE((result.q - reference.q).lpNorm<Eigen::Infinity>(), 1e-3);
+  // One round is not enough: the edge's rows were left out at the start.
+  SolverOptions one_round = default_options();
+  one_round.max_active_set_rounds = 1;
+  const PostureResult first = PostureSolver(scene, one_round).solve(request);
+  EXPECT_EQ(first.status, PostureStatus::Infeasible);
+  EXPECT_EQ(first.message.rfind("polygon: vertices still outside their polygon after 1 active-set "
+                                "rounds",
+                                0),
+            0u)
+      << first.message;
+  EXPECT_GT(first.residuals.at("polygon"), 0.01);
+}
+
 // The smallest signed distance over the candidate pairs that a request does not exclude.
 double closest_pair(const Scene& scene, const PostureSolver& solver, const PostureRequest& request,
                     const Eigen::VectorXd& q, int* checked) {
