@@ -1,8 +1,10 @@
 // Solve time of the IK-statics program on the humanoid with 2, 3 and 4 contacts (feet on the
 // floor, palms on the wall), cold (from the standing guess) and warm (from the solution of the
-// same stance with the robot shifted by 2 cm), as the solver issue asks. Warm starts, as the
-// search's do from a node, take the solution's forces too (ContactTask::force_guess_W);
-// WarmConfigurationOnly takes its configuration only (forces from the even share). Run:
+// same stance with the robot shifted by 2 cm), as the solver issue asks. Warm takes the
+// solution's forces too (ContactTask::force_guess_W); WarmConfigurationOnly, as the search's
+// candidates do, its configuration only (the solver starts from the forces that balance the robot
+// there at least cost: planner/solver/force_balance.h). Experiment switches:
+// bench/solver_switches.h. Run:
 //   build/bench/solver_bench --benchmark_repetitions=20 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
