@@ -42,7 +42,8 @@ TEST(DualArm, PlansCertifiesAndArm1HandsTheCylinderOverToArm2InTheAir) {
     const int arm1 = pads_of(ids, "arm1"), arm2 = pads_of(ids, "arm2");
     // Off the platforms the cylinder is held by the pads alone: one arm's grasp, a squeeze by one
     // pad of each arm, or (since the solver starts from balanced forces) a single pad carrying it
-    // from below within its friction cone; the statics of every step are certified above.
+    // from below, tilted to the edge of its friction cone; the statics of every step are certified
+    // above.
     EXPECT_TRUE(on_a || on_b || arm1 + arm2 >= 1) << "step " << i;
     if (!on_a && !on_b && arm1 + arm2 == 1) {
       for (const VertexForce& f : steps[i].forces)  // the pad pushes the cylinder up
