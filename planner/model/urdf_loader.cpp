@@ -81,7 +81,10 @@ std::string number(double x) {
 
 std::string numbers(const Eigen::VectorXd& v) {
   std::string out;
-  for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? " " : "") + number(v[i]);
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    if (i > 0) out += ' ';  // appended, not prepended: GCC 12 warns (-Wrestrict) on "" + string
+    out += number(v[i]);
+  }
   return out;
 }
 
