@@ -407,11 +407,14 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
           std::max(result.residuals["torque_limits"], torque_excess);
     const std::vector<Eigen::VectorXd> margins = polygon_margins(nlp.state());
     double polygon_excess = 0.0;  // every polygon row, the ones left out included
-    for (const Eigen::VectorXd& rows : margins)
-      if (rows.size() > 0) {
-        polygon_excess = std::max(polygon_excess, -rows.minCoeff());
-        result.residuals["polygon"] = std::max(result.residuals["polygon"], polygon_excess);
-      }
+    bool has_polygon_rows = false;
+    for (const Eigen::VectorXd& rows : margins) {
+      if (rows.size() == 0) continue;
+      has_polygon_rows = true;
+      polygon_excess = std::max(polygon_excess, -rows.minCoeff());
+    }
+    if (has_polygon_rows)
+      result.residuals["polygon"] = std::max(result.residuals["polygon"], polygon_excess);
     if (run.status != PostureStatus::Solved) break;
     // Pairs outside the active set may have come closer than the margin: add them.
     const size_t before = active.size();
