@@ -1,6 +1,6 @@
 #pragma once
 // `stanceplan posture SCENARIO.yaml [--stance initial|goal] [--out FILE]`: solves one stance of a
-// scenario with every contact loaded and writes it as a one-step plan (PLAN_FORMAT.md).
+// scenario with every contact loaded and writes it as a one-step plan (docs/PLAN_FORMAT.md).
 #include <iosfwd>
 #include <string>
 

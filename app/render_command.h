@@ -2,7 +2,7 @@
 // `stanceplan render PLAN.json --out DIR [--size 1280x720] [--view three-quarter] [--strip
 // FILE.png]
 // [--gif FILE.gif] [--collision-geometry] [--friction-cones] [--eye X Y Z --target X Y Z]`:
-// renders every step of a plan (PLAN_FORMAT.md) off-screen to DIR/step_000.png, ..., and
+// renders every step of a plan (docs/PLAN_FORMAT.md) off-screen to DIR/step_000.png, ..., and
 // optionally the figure strip of the sequence and an animated GIF. Needs no display.
 #include <iosfwd>
 #include <string>

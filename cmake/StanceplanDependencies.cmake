@@ -1,4 +1,4 @@
-# Every external package, found the way ../shared/design/DEPENDENCIES.md documents for Debian 12.
+# Every external package, found the way docs/DEPENDENCIES.md documents for Debian 12.
 find_package(PkgConfig REQUIRED)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)

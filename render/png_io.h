@@ -1,6 +1,7 @@
 #pragma once
 // PNG files through libpng. Encoding uses zlib level 1 and the SUB filter: on rendered frames this
-// is the fastest setting that still compresses well (DEPENDENCIES.md section 5: stb is 3x slower).
+// is the fastest setting that still compresses well (docs/DEPENDENCIES.md section 5: stb is
+// 3x slower).
 #include <string>
 
 #include "render/image.h"

@@ -1,6 +1,6 @@
 #pragma once
 // The GLFW window with its OpenGL 3.3 core context and the Dear ImGui context drawn into it
-// through the GLFW and OpenGL3 backends compiled into Debian's libimgui.a (DEPENDENCIES.md
+// through the GLFW and OpenGL3 backends compiled into Debian's libimgui.a (docs/DEPENDENCIES.md
 // section 6). Thin: frames begin and end here, everything shown is drawn by the panel sections.
 // Use from one thread (the one that made it): the window's context stays current on it.
 #include <string>

@@ -2,11 +2,11 @@
 // The 3-D view's pictures, made by render::Renderer (OSMesa) on a thread of its own: the same
 // renderer and look as the PNGs, and the window's thread never waits for a frame.
 //
-// Why a thread (DEPENDENCIES.md section 5): an OSMesa context and the window's GLX context made
-// current in turn on one thread need each released before the other is bound, and that works only
-// because both are Mesa. GL contexts are per thread, so with OSMesa current on this thread and the
-// window's context current on the panel's thread neither is ever switched; the panel uploads the
-// finished RGBA image into a texture of its own context. Rendering (30-70 ms at 1280x720 on
+// Why a thread (docs/DEPENDENCIES.md section 5): an OSMesa context and the window's GLX context
+// made current in turn on one thread need each released before the other is bound, and that works
+// only because both are Mesa. GL contexts are per thread, so with OSMesa current on this thread and
+// the window's context current on the panel's thread neither is ever switched; the panel uploads
+// the finished RGBA image into a texture of its own context. Rendering (30-70 ms at 1280x720 on
 // llvmpipe) also stays off the panel's frame time.
 #include <chrono>
 #include <condition_variable>

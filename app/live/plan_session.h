@@ -1,6 +1,6 @@
 #pragma once
-// One stance search on a worker thread (ARCHITECTURE.md, Threads). Every SearchEvent is stored in
-// order in the session; consumers (the snapshot writer, the panel, the progress line) read them
+// One stance search on a worker thread (docs/ARCHITECTURE.md, Threads). Every SearchEvent is stored
+// in order in the session; consumers (the snapshot writer, the panel, the progress line) read them
 // with their own cursor and never block the search: the search only takes the session's mutex
 // long enough to append an event. The step gate is the one way to hold the search (pause / step).
 #include <chrono>

@@ -1,5 +1,5 @@
 #pragma once
-// Live snapshots of a running search (issue 6): every event of a PlanSession becomes a PNG in a
+// Live snapshots of a running search: every event of a PlanSession becomes a PNG in a
 // folder, named by event number and kind (event_record.h), plus the index events.jsonl with one
 // line per event. Rendering and PNG encoding run on the writer's own thread at the lowest CPU
 // priority (thread_priority.h: the renderer's llvmpipe threads inherit it) so that they take the

@@ -1,9 +1,9 @@
 #pragma once
-// Collision geometry of a System for collision avoidance (METHOD.md section 4, E20), split the
+// Collision geometry of a System for collision avoidance (docs/METHOD.md section 4, E20), split the
 // model/data way: CollisionModel is const (FCL shapes, links, candidate pairs) and can be shared by
 // threads; CollisionData is one thread's mutable workspace (world pose of every shape, Jacobian
 // scratch). Meshes become convex hulls (fcl::Convexd): signed distance is wrong on fcl::BVHModel
-// (DEPENDENCIES.md section 2), and the paper itself uses convex bounding volumes.
+// (docs/DEPENDENCIES.md section 2), and the paper itself uses convex bounding volumes.
 #include <Eigen/Geometry>
 #include <array>
 #include <map>
@@ -88,7 +88,7 @@ struct CollisionPair {
 // A pair of links with collision geometry that is never checked, and why: "rigidly connected"
 // (only fixed joints between them), "adjacent bodies" (one movable joint between their rigid
 // bodies), "static" (neither moves), "SRDF (<reason>)", or "disabled" (CollisionOptions). Pairs
-// joined directly by one joint (Model::adjacent) are left out, as PLAN_FORMAT.md's
+// joined directly by one joint (Model::adjacent) are left out, as docs/PLAN_FORMAT.md's
 // collision_pairs_ignored expects.
 struct ExcludedPair {
   int entity_a = -1;

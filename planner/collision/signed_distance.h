@@ -1,12 +1,12 @@
 #pragma once
 // Signed distance between the two links of a candidate pair and its derivative with respect to the
-// system configuration q (collision avoidance, METHOD.md section 4: E20 constraint, E48 gradient).
-// A penetration gives a negative distance (minus the penetration depth) with witness points on both
-// surfaces. Shapes are cores grown by margins (collision_model.h). Separated polytope cores: FCL's
-// GJK (GST_LIBCCD, nearest points on, signed distance off, so that FCL never runs its EPA, which
-// can abort the process). Overlapping or touching polytope cores: the exact separating-axis
-// penetration of polytope_penetration.h. A point core (sphere centre): exact from the other
-// core's face planes when inside it, GJK otherwise. Two point cores: closed form.
+// system configuration q (collision avoidance, docs/METHOD.md section 4: E20 constraint, E48
+// gradient). A penetration gives a negative distance (minus the penetration depth) with witness
+// points on both surfaces. Shapes are cores grown by margins (collision_model.h). Separated
+// polytope cores: FCL's GJK (GST_LIBCCD, nearest points on, signed distance off, so that FCL never
+// runs its EPA, which can abort the process). Overlapping or touching polytope cores: the exact
+// separating-axis penetration of polytope_penetration.h. A point core (sphere centre): exact from
+// the other core's face planes when inside it, GJK otherwise. Two point cores: closed form.
 #include <Eigen/Core>
 #include <array>
 #include <span>

@@ -1,7 +1,7 @@
 #pragma once
-// Contacts and stances (METHOD.md section 2). A contact joins surface s1 (the smaller one: forces
-// act at its vertices) and s2, on different links. A stance is a set of contacts in which every
-// surface appears at most once, kept sorted so that equal stances compare and hash equal.
+// Contacts and stances (docs/METHOD.md section 2). A contact joins surface s1 (the smaller one:
+// forces act at its vertices) and s2, on different links. A stance is a set of contacts in which
+// every surface appears at most once, kept sorted so that equal stances compare and hash equal.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -16,7 +16,7 @@ struct Contact {
   bool bilateral = false;  // force free in R^3 (no unilaterality, no friction cone)
   bool fixed = false;      // never removed by the search
 
-  // The search's equivalence class: the same pair of surfaces (METHOD.md section 2).
+  // The search's equivalence class: the same pair of surfaces (docs/METHOD.md section 2).
   bool same_surfaces(const Contact& other) const { return s1 == other.s1 && s2 == other.s2; }
   bool operator==(const Contact& other) const = default;
   auto operator<=>(const Contact& other) const = default;

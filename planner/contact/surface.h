@@ -1,6 +1,6 @@
 #pragma once
-// A contact surface (METHOD.md section 2): a planar convex polygon fixed to a link, with a frame
-// whose z axis is the outward normal. Surfaces are value types shared by the solver, the plan
+// A contact surface (docs/METHOD.md section 2): a planar convex polygon fixed to a link, with a
+// frame whose z axis is the outward normal. Surfaces are value types shared by the solver, the plan
 // writer and the renderer.
 #include <Eigen/Geometry>
 #include <string>

@@ -1,8 +1,8 @@
 #pragma once
-// A plan in memory (PLAN_FORMAT.md, `stanceplan/plan@1`): the sequence of stances with their
-// transition configurations, contact forces and joint torques. Step semantics (METHOD.md section
-// 2): step 0 realises sigma_init with every contact loaded; step i > 0 is the transition between
-// sigma_{i-1} and sigma_i, touching the larger stance and loading the smaller one.
+// A plan in memory (docs/PLAN_FORMAT.md, `stanceplan/plan@1`): the sequence of stances with their
+// transition configurations, contact forces and joint torques. Step semantics (docs/METHOD.md
+// section 2): step 0 realises sigma_init with every contact loaded; step i > 0 is the transition
+// between sigma_{i-1} and sigma_i, touching the larger stance and loading the smaller one.
 #include <Eigen/Core>
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// Reads a plan file (PLAN_FORMAT.md) back into memory with everything needed to check or draw it
-// from the file and the models alone: the entities (URDFs it names), the surfaces it lists, the
+// Reads a plan file (docs/PLAN_FORMAT.md) back into memory with everything needed to check or draw
+// it from the file and the models alone: the entities (URDFs it names), the surfaces it lists, the
 // physics it states and every step. Never calls the solver.
 #include <string>
 #include <utility>

@@ -1,5 +1,5 @@
 #pragma once
-// A plan step from the solve that produced it (PLAN_FORMAT.md step semantics): the request's
+// A plan step from the solve that produced it (docs/PLAN_FORMAT.md step semantics): the request's
 // contacts are the touched ones, with their loaded flags; forces, torques and solver figures come
 // from the result.
 #include <optional>

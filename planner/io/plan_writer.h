@@ -1,6 +1,6 @@
 #pragma once
-// Writes a plan in exactly the format of PLAN_FORMAT.md, atomically, with paths relative to the
-// plan file's folder.
+// Writes a plan in exactly the format of docs/PLAN_FORMAT.md, atomically, with paths relative to
+// the plan file's folder.
 #include <string>
 
 #include "planner/io/plan.h"

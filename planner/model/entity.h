@@ -1,6 +1,6 @@
 #pragma once
-// An entity of METHOD.md section 1: a kinematic tree plus how its root is attached to the world.
-// Configuration of one entity (the layout is defined here and nowhere else):
+// An entity of docs/METHOD.md section 1: a kinematic tree plus how its root is attached to the
+// world. Configuration of one entity (the layout is defined here and nowhere else):
 //   floating robot / object: [ p_WB (3) | quaternion_WB w,x,y,z (4) | dofs (n) ]
 //   fixed robot / environment: [ dofs (n) ]                (root at the constant pose T_WB)
 #include <Eigen/Geometry>

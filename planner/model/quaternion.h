@@ -2,7 +2,7 @@
 // Root orientation from the 4 quaternion components (w, x, y, z) of the configuration vector.
 // R(phi) is the rotation of the normalised quaternion phi/|phi|, so that every iterate of the
 // solver (where |phi| = 1 holds only at convergence) still maps to a proper rotation; the unit-norm
-// constraint keeps phi on the sphere (METHOD.md section 4).
+// constraint keeps phi on the sphere (docs/METHOD.md section 4).
 #include <Eigen/Core>
 #include <array>
 

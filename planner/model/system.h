@@ -1,5 +1,5 @@
 #pragma once
-// Several entities planned together (METHOD.md section 1): q = (q_1, ..., q_N), each entity's
+// Several entities planned together (docs/METHOD.md section 1): q = (q_1, ..., q_N), each entity's
 // segment laid out as Entity documents, segments concatenated in the order entities were added.
 #include <Eigen/Core>
 #include <string>

@@ -1,14 +1,14 @@
 #pragma once
-// Adj+ and Adj- of a stance (METHOD.md section 2): the candidate contacts to add (one per class of
-// equivalent stances: a pair of surfaces, the solver picks the placement) and to remove, after the
-// pruning rules below. Each rule either cannot remove a feasible transition, or is a documented
-// option of SearchOptions:
+// Adj+ and Adj- of a stance (docs/METHOD.md section 2): the candidate contacts to add (one per
+// class of equivalent stances: a pair of surfaces, the solver picks the placement) and to remove,
+// after the pruning rules below. Each rule either cannot remove a feasible transition, or is a
+// documented option of SearchOptions:
 //  - same link: a contact needs two links (exact);
 //  - both surfaces on bodies that never move (the environment, a fixed robot's base): their
 //    relative placement is constant, so the contact is either always or never there (exact);
 //  - a surface already in the stance as s1, or s2 already the s1 of a contact (stance rule);
 //  - removing the last contact that supports a floating body with mass: no equilibrium is
-//    possible without support (exact), and fixed contacts are never removed (METHOD.md);
+//    possible without support (exact), and fixed contacts are never removed (docs/METHOD.md);
 //  - removing a contact that leaves such a body fewer than SearchOptions::min_contacts (option);
 //  - two surfaces of one entity unless SearchOptions::self_contacts (option);
 //  - surfaces farther apart than SearchOptions::contact_reach at the node's configuration: one

@@ -1,6 +1,6 @@
 #pragma once
-// The guide path of METHOD.md section 3: milestone configurations q_ref,1..M and the distance the
-// search's cost is measured in. A global milestone index t advances when the tree holds a
+// The guide path of docs/METHOD.md section 3: milestone configurations q_ref,1..M and the distance
+// the search's cost is measured in. A global milestone index t advances when the tree holds a
 // configuration within tolerance of milestone t.
 #include <Eigen/Core>
 #include <vector>

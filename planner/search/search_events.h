@@ -18,7 +18,7 @@ namespace stanceplan {
 enum class SearchEventKind { Expansion, Candidate, Milestone, PlanFound, Failure };
 const char* to_string(SearchEventKind kind);
 
-enum class CandidateCase { None, Add, Remove };  // METHOD.md case 1 / case 2
+enum class CandidateCase { None, Add, Remove };  // docs/METHOD.md case 1 / case 2
 
 struct SearchEvent {
   int number = 0;  // 0, 1, 2, ... in the order the search publishes them

@@ -1,5 +1,5 @@
 #pragma once
-// Budgets and tolerances of the stance search (METHOD.md section 3), read from a scenario's
+// Budgets and tolerances of the stance search (docs/METHOD.md section 3), read from a scenario's
 // `search` section and overridable on the command line.
 #include <string>
 #include <utility>

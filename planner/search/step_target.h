@@ -1,6 +1,6 @@
 #pragma once
-// Where a case-1 step aims (obj4, METHOD.md E25): s1's placement in the targeted milestone, pulled
-// back along the step when it would land on another contact. A side-step shows why: once the
+// Where a case-1 step aims (obj4, docs/METHOD.md E25): s1's placement in the targeted milestone,
+// pulled back along the step when it would land on another contact. A side-step shows why: once the
 // milestone advances while the robot stands on its leading foot, the trailing foot's placement in
 // the next milestone lies under the leading foot, and the solve can only cycle at the foot-foot
 // collision boundary until its iteration limit.

@@ -1,6 +1,6 @@
 #pragma once
 // Runs Ipopt on a PostureNlp. The only place that includes Ipopt's headers. Ipopt 3.11 with
-// MUMPS is not thread-safe (DEPENDENCIES.md section 1): every solve of the process holds one
+// MUMPS is not thread-safe (docs/DEPENDENCIES.md section 1): every solve of the process holds one
 // mutex, so callers on several threads are serialised here.
 #include <Eigen/Core>
 #include <string>

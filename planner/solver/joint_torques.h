@@ -1,6 +1,6 @@
 #pragma once
 // Joint torques that hold a robot against point loads (E18) and their derivatives (paper
-// Appendix A, the derivatives of the torque Jacobians Upsilon). Convention of PLAN_FORMAT.md:
+// Appendix A, the derivatives of the torque Jacobians Upsilon). Convention of docs/PLAN_FORMAT.md:
 //   tau + sum_loads J(p)^T f = 0,   so every load f received at p contributes  tau -= J(p)^T f.
 // Gravity is a load too: m_i g received at link i's centre of mass.
 #include <Eigen/Core>

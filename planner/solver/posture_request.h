@@ -1,5 +1,5 @@
 #pragma once
-// The input of one inverse-kinematics-and-statics solve (METHOD.md section 4).
+// The input of one inverse-kinematics-and-statics solve (docs/METHOD.md section 4).
 //   realise a stance:  every contact loaded;
 //   case 1 (add c):    sigma's contacts loaded, c touched but unloaded with a free placement;
 //   case 2 (remove c): every contact of sigma touched, c unloaded.

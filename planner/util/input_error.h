@@ -1,6 +1,6 @@
 #pragma once
 // Errors for bad input (files, fields, values). The message always names where the fault is
-// ("file:line: field: what was expected, what was found"); see ARCHITECTURE.md "Conventions".
+// ("file:line: field: what was expected, what was found"); see docs/ARCHITECTURE.md "Conventions".
 #include <stdexcept>
 #include <string>
 

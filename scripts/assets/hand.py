@@ -313,7 +313,7 @@ def object_urdf(name, doc, mesh, mass, inertia_diag):
 
 def ball_files():
     R, m = BALL["radius"], BALL["mass"]
-    inertia = 0.4 * m * R * R  # solid sphere (METHOD.md section 5)
+    inertia = 0.4 * m * R * R  # solid sphere (docs/METHOD.md section 5)
     faces = ball_faces()
     groups = [("ball_north", [v for name, v, n, x in faces if name[0] == "n"]),
               ("ball_south", [v for name, v, n, x in faces if name[0] == "s"])]

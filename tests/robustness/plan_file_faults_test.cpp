@@ -1,5 +1,5 @@
-// Faults in plan files (PLAN_FORMAT.md): truncated text, wrong types, non-finite numbers, wrong
-// dimensions and unknown surface ids are InputErrors naming the file and the field, and
+// Faults in plan files (docs/PLAN_FORMAT.md): truncated text, wrong types, non-finite numbers,
+// wrong dimensions and unknown surface ids are InputErrors naming the file and the field, and
 // `stanceplan certify` exits 1 on them. The base plan is the fuzz seed fuzz/corpus/plan/
 // walk_initial.json (a real one-step plan of humanoid_walk.yaml).
 #include <gmock/gmock.h>

@@ -1,5 +1,6 @@
-// The paper's third scenario (METHOD.md section 5), planned within its own budget and certified:
-// scenarios/dual_arm_cylinder.yaml, a hand-over of a faceted cylinder between two fixed arms.
+// The paper's third scenario (docs/METHOD.md section 5), planned within its own budget and
+// certified: scenarios/dual_arm_cylinder.yaml, a hand-over of a faceted cylinder between two fixed
+// arms.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,7 @@
-// Issue 7, scenario 5: scenarios/humanoid_climb_on_robot.yaml, planned within its own budget and
-// certified. A humanoid crosses the gap between two platforms by stepping on the hands (palms up,
-// raised over the head) of a second humanoid standing on the floor in the gap.
+// The paper's fifth scenario (docs/METHOD.md section 5.5): scenarios/humanoid_climb_on_robot.yaml,
+// planned within its own budget and certified. A humanoid crosses the gap between two platforms
+// by stepping on the hands (palms up, raised over the head) of a second humanoid standing on the
+// floor in the gap.
 //
 // Why the palms are held overhead with the wrists bent back (the supporter's limits: shoulder_p
 // 110 N m, elbow_p 70, wrist_p 35, wrist_y 30, wrist_r 25; the climber weighs 572 N): a palm more

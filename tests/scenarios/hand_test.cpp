@@ -1,7 +1,7 @@
-// The dexterous-hand scenarios of METHOD.md section 5 (scenario 2): the planner finds a plan for
-// each within the scenario's node budget, the independent checker certifies it, and the plan does
-// what the task says (the ball ends upside down, the pen is held by its front end), with at least
-// three fingertips loaded at every step (search.min_contacts).
+// The dexterous-hand scenarios of docs/METHOD.md section 5 (scenario 2): the planner finds a plan
+// for each within the scenario's node budget, the independent checker certifies it, and the plan
+// does what the task says (the ball ends upside down, the pen is held by its front end), with at
+// least three fingertips loaded at every step (search.min_contacts).
 #include <gtest/gtest.h>
 
 #include <cmath>

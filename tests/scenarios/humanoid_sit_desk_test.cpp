@@ -1,5 +1,5 @@
-// The paper's first scenario (METHOD.md section 5.1), humanoid_sit_desk.yaml: the humanoid walks to
-// the desk, sits down and lays its forearms on the desk. The plan must be found within the
+// The paper's first scenario (docs/METHOD.md section 5.1), humanoid_sit_desk.yaml: the humanoid
+// walks to the desk, sits down and lays its forearms on the desk. The plan must be found within the
 // scenario's own budget and pass the independent checker; its shape is checked too.
 #include <gtest/gtest.h>
 

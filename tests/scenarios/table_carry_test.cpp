@@ -1,5 +1,6 @@
-// The paper's fourth scenario (METHOD.md section 5), planned within its own budget and certified:
-// scenarios/two_humanoids_table.yaml, two humanoids carry a table with four fixed bilateral grasps.
+// The paper's fourth scenario (docs/METHOD.md section 5), planned within its own budget and
+// certified: scenarios/two_humanoids_table.yaml, two humanoids carry a table with four fixed
+// bilateral grasps.
 #include <gtest/gtest.h>
 
 #include <set>

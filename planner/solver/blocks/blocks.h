@@ -1,6 +1,6 @@
 #pragma once
-// The constraint families of the IK-statics program (METHOD.md section 4), one class per family,
-// each implemented in its own file.
+// The constraint families of the IK-statics program (docs/METHOD.md section 4), one class per
+// family, each implemented in its own file.
 #include <memory>
 #include <vector>
 

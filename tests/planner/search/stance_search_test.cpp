@@ -1,5 +1,5 @@
-// The stance search on humanoid_walk.yaml (METHOD.md section 3) and its certification; budgets,
-// determinism across thread counts, cancellation and the step gate.
+// The stance search on humanoid_walk.yaml (docs/METHOD.md section 3) and its certification;
+// budgets, determinism across thread counts, cancellation and the step gate.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Multi-entity statics (METHOD.md section 4, E16-E18): a ball held by the four fingertips of the
-// fixed hand (scenarios/hand_ball_rotate.yaml). The solver's forces act BY the ball ON the
+// Multi-entity statics (docs/METHOD.md section 4, E16-E18): a ball held by the four fingertips of
+// the fixed hand (scenarios/hand_ball_rotate.yaml). The solver's forces act BY the ball ON the
 // fingertips, so the ball receives their opposites: its equilibrium (E16-E17 with the sign flip of
 // the larger surface) and the hand's torques (E18, the reaction of the ball on the fingers plus the
 // fingers' weight) are checked here against finite differences of forward kinematics alone.

@@ -1,4 +1,4 @@
-// The IK-statics solver on the humanoid: physical residuals of solved postures (METHOD.md
+// The IK-statics solver on the humanoid: physical residuals of solved postures (docs/METHOD.md
 // section 4), the three uses (realise, case 1, case 2), infeasibility as a status, determinism
 // and thread safety.
 #include <gtest/gtest.h>
@@ -58,7 +58,7 @@ bool inside_convex_hull(const std::vector<Eigen::Vector2d>& points, const Eigen:
   return true;
 }
 
-// The physics a checker verifies (PLAN_FORMAT.md), from the result alone.
+// The physics a checker verifies (docs/PLAN_FORMAT.md), from the result alone.
 void expect_physically_valid(const Scene& scene, const PostureRequest& request,
                              const PostureResult& r, double friction) {
   const double mass = robot_mass(scene), weight = mass * 9.81;

@@ -1,4 +1,4 @@
-// Multi-entity statics (METHOD.md section 4, E16-E18) with two floating robots and an object
+// Multi-entity statics (docs/METHOD.md section 4, E16-E18) with two floating robots and an object
 // between them: the initial stance of scenarios/two_humanoids_table.yaml, four feet on the floor
 // and four palms on the table's handles (bilateral). Each palm force acts BY the table ON the robot
 // (s1 = palm), so the table receives the opposite of all four, from both robots; each robot's
