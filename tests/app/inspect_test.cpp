@@ -19,6 +19,7 @@ using test::CliResult;
 CliResult run(std::vector<std::string> args) { return test::run_cli(std::move(args)); }
 
 TEST(Inspect, TalosJson) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const CliResult r = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
                            "--kind", "floating", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -37,6 +38,7 @@ TEST(Inspect, TalosJson) {
 }
 
 TEST(Inspect, TalosCollisionObjectsAreBuiltAndTheSrdfDisablesPairs) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const std::string srdf = test::shared_path("robots/talos/robots/talos_data/srdf/talos.srdf");
   const CliResult with = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
                               "--kind", "floating", "--srdf", srdf, "--json"});
@@ -52,6 +54,7 @@ TEST(Inspect, TalosCollisionObjectsAreBuiltAndTheSrdfDisablesPairs) {
 }
 
 TEST(Inspect, PandaJsonListsPrismaticAndMimicJoints) {
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   const CliResult r = run({"inspect", test::panda_urdf(), "--package-path", test::panda_package_dir(), "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto d = nlohmann::json::parse(r.out);
@@ -65,6 +68,7 @@ TEST(Inspect, PandaJsonListsPrismaticAndMimicJoints) {
 }
 
 TEST(Inspect, TextOutputSummarisesTheModel) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const CliResult r = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir()});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("actuated dofs: 32   mass: 90.2722 kg   links: 60"));

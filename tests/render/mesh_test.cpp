@@ -58,6 +58,7 @@ TEST(MeshData, RingSurroundsThePolygon) {
 }
 
 TEST(MeshFile, MirroredScaleKeepsTrianglesOutward) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const std::string stl =
       test::shared_path("robots/talos/robots/talos_data/meshes/v2/knee_lo_res.stl");
   const LoadedMesh plain = load_mesh_file(stl);
@@ -91,6 +92,7 @@ TEST(MeshFile, MissingFileIsAnErrorNamingItAndTheLibraryWarnsOnce) {
 }
 
 TEST(MeshFile, DaeMaterialsBecomeVertexColours) {
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   const LoadedMesh link = load_mesh_file(
       test::shared_path("robots/panda/robots/panda_description/meshes/visual/link6.dae"));
   EXPECT_TRUE(link.has_material_colors);

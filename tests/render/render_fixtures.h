@@ -116,7 +116,8 @@ inline std::string write_humanoid_plan(const std::string& dir, int num_steps) {
   return path;
 }
 
-// TALOS (STL meshes, several mirrored) as a floating robot, standing at the origin.
+// TALOS (STL meshes, several mirrored) as a floating robot, standing at the origin. From
+// ../shared: tests that call it start with STANCEPLAN_REQUIRE_SHARED("robots/talos").
 inline Scene talos_scene(Eigen::VectorXd* q) {
   UrdfOptions options;
   options.packages.directories = {talos_package_dir()};

@@ -101,6 +101,7 @@ TEST(Renderer, SameInputsGiveIdenticalPixels) {
 }
 
 TEST(Renderer, TalosWithMirroredStlMeshesFillsAPlausibleSilhouette) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   Eigen::VectorXd q;
   const Scene scene = test::talos_scene(&q);
   RenderStyle style = test::plain_style();
@@ -132,6 +133,7 @@ TEST(Renderer, TalosWithMirroredStlMeshesFillsAPlausibleSilhouette) {
 }
 
 TEST(Renderer, CollisionGeometryOnRequest) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   Eigen::VectorXd q;
   const Scene scene = test::talos_scene(&q);
   RenderStyle style = test::plain_style();
@@ -145,6 +147,7 @@ TEST(Renderer, CollisionGeometryOnRequest) {
 }
 
 TEST(Renderer, DaeMeshesKeepTheirMaterialColours) {
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   // The Panda's visual meshes are COLLADA files with white and dark grey materials and no URDF
   // colour: flat shading must show both, not the default grey.
   UrdfOptions options;

@@ -229,6 +229,9 @@ TEST(UrdfSemanticsOnRealModels, EveryProjectAndSharedModelLoads) {
     SCOPED_TRACE(path);
     EXPECT_NO_THROW(load_urdf(path));
   }
+  // The project's own models are checked above whether or not ../shared is there.
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   for (const auto& [urdf, package] :
        {std::pair{test::talos_urdf(), test::talos_package_dir()},
         std::pair{test::panda_urdf(), test::panda_package_dir()},

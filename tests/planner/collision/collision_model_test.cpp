@@ -192,6 +192,7 @@ TEST(Srdf, ParsesDisabledCollisions) {
   EXPECT_EQ(pairs[0].link2, "b");
   EXPECT_EQ(pairs[0].reason, "Adjacent");
   EXPECT_EQ(pairs[1].reason, "");
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   EXPECT_EQ(load_srdf_disabled_collisions(talos_srdf()).size(), 459u);
 }
 
@@ -295,6 +296,7 @@ Closest closest_pair(const System& system, const CollisionModel& model, const Ei
 }
 
 TEST(CollisionModel, TalosBuildsWithSrdfAndHalfSittingIsCollisionFree) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   System system;
   const int talos = system.add(Entity{"talos", EntityKind::FloatingRobot,
                                       load_robot(test::talos_urdf(), test::talos_package_dir())});
@@ -382,6 +384,7 @@ TEST(CollisionModel, TalosBuildsWithSrdfAndHalfSittingIsCollisionFree) {
 }
 
 TEST(CollisionModel, PandaBuildsWithSrdf) {
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   System system;
   system.add(Entity{"panda", EntityKind::FixedRobot,
                     load_robot(test::panda_urdf(), test::panda_package_dir())});

@@ -72,6 +72,7 @@ void expect_valid_hull(const ConvexHull& hull, const std::vector<Eigen::Vector3d
 }
 
 TEST(MeshLoader, EveryTalosCollisionMeshLoadsAndHulls) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const std::vector<std::string> paths = talos_collision_meshes();
   ASSERT_GE(paths.size(), 20u);
   for (const std::string& path : paths) {
@@ -91,6 +92,7 @@ TEST(MeshLoader, EveryTalosCollisionMeshLoadsAndHulls) {
 }
 
 TEST(ConvexHull, SimplifiedHullGrownByItsMarginContainsTheMesh) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   for (const char* relative : {"arm/arm_3_collision.STL", "torso/base_link_collision.STL"}) {
     SCOPED_TRACE(relative);
     const TriangleMesh mesh = load_mesh(talos_mesh(relative));
@@ -108,6 +110,7 @@ TEST(ConvexHull, SimplifiedHullGrownByItsMarginContainsTheMesh) {
 }
 
 TEST(MeshLoader, MirroredMeshKeepsOutwardWindingAndMirrorsTheHull) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const std::string path = talos_mesh("v2/knee_collision.stl");
   const TriangleMesh plain = load_mesh(path);
   const TriangleMesh mirrored = load_mesh(path, Eigen::Vector3d(1, -1, 1));
@@ -145,6 +148,7 @@ TEST(MeshLoader, ScaleAppliesPerAxis) {
 }
 
 TEST(MeshLoader, ColladaSceneGraphIsFlattened) {
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   // The Panda's visual DAE files carry node transforms (and a unit); once flattened they must
   // cover the same region as the collision STL of the same link.
   const std::string dir = test::shared_path("robots/panda/robots/panda_description/meshes/");

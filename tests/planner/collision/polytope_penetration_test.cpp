@@ -90,6 +90,7 @@ TEST(PolytopePenetration, FaceAndEdgeContactsByHand) {
 }
 
 TEST(PolytopePenetration, MatchesFclEpaOnRandomOverlaps) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const ConvexHull arm = centred_talos_hull("arm/arm_3_collision.STL");
   const ConvexHull knee = centred_talos_hull("v2/knee_collision.stl");
   const Eigen::Vector3d box_size(0.1, 0.15, 0.2);

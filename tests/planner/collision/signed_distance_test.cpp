@@ -230,6 +230,7 @@ TEST(SignedDistance, SphereBoxSeparationAndPenetrationDepth) {
 }
 
 TEST(SignedDistance, TalosHullPairsMatchFiniteDifferences) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   // Real meshes (simplified hulls grown by their margins, mirrored ones included) on a floating
   // base, at a random posture: a few separated and every penetrating candidate pair.
   UrdfOptions urdf;

@@ -184,6 +184,11 @@ const Eigen::Vector3d kVectorOnLink = Eigen::Vector3d(0.2, -0.5, 0.8).normalized
 
 class KinematicsHessianTest : public ::testing::TestWithParam<std::string> {
  protected:
+  // TALOS and the Panda come from ../shared: only their cases skip without it.
+  void SetUp() override {
+    if (GetParam() == "talos") STANCEPLAN_REQUIRE_SHARED("robots/talos");
+    if (GetParam() == "panda_fixed") STANCEPLAN_REQUIRE_SHARED("robots/panda");
+  }
   const Entity& entity() const { return test_entity(GetParam()); }
   int nq() const { return entity().nq(); }
   int num_links() const { return entity().model->num_links(); }
@@ -448,6 +453,7 @@ TEST(KinematicsHessianModels, TestModelsHaveTheJointsTheyAreMeantToExercise) {
   EXPECT_EQ(chain.num_dofs(), 3);  // j1, p3, j5; m2 and m4 share j1's and p3's columns
   EXPECT_EQ(chain.joints[chain.find_joint("m2")].dof, chain.find_dof("j1"));
   EXPECT_EQ(chain.joints[chain.find_joint("m4")].dof, chain.find_dof("p3"));
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   const Model& panda = *test_entity("panda_fixed").model;
   EXPECT_TRUE(panda.joints[panda.find_joint("panda_finger_joint2")].is_mimic);
   EXPECT_EQ(panda.joints[panda.find_joint("panda_finger_joint1")].type, JointType::Prismatic);

@@ -34,6 +34,7 @@ std::string error_of(F f) {
 }
 
 TEST(UrdfLoader, TalosHas32ActuatedJointsAndItsDocumentedMass) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const Model talos = load_urdf(test::talos_urdf(), with_package(test::talos_package_dir()));
   EXPECT_EQ(talos.name, "talos");
   EXPECT_EQ(talos.num_dofs(), 32);
@@ -60,6 +61,7 @@ TEST(UrdfLoader, TalosHas32ActuatedJointsAndItsDocumentedMass) {
 }
 
 TEST(UrdfLoader, PandaHasPrismaticAndMimicFingers) {
+  STANCEPLAN_REQUIRE_SHARED("robots/panda");
   const Model panda = load_urdf(test::panda_urdf(), with_package(test::panda_package_dir()));
   EXPECT_EQ(panda.num_dofs(), 8);  // 7 revolute + 1 independent finger
   EXPECT_NEAR(panda.total_mass, 17.4519, 1e-3);
@@ -78,6 +80,7 @@ TEST(UrdfLoader, PandaHasPrismaticAndMimicFingers) {
 }
 
 TEST(UrdfLoader, LinksAreInTopologicalOrder) {
+  STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const Model talos = load_urdf(test::talos_urdf(), with_package(test::talos_package_dir()));
   EXPECT_EQ(talos.links[0].name, "base_link");
   for (int i = 1; i < talos.num_links(); ++i) EXPECT_LT(talos.links[i].parent_link, i);
