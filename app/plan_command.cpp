@@ -18,8 +18,8 @@
 #include "app/cli.h"
 #include "app/live/plan_session.h"
 #include "app/live/snapshot_writer.h"
+#include "app/plan_output.h"
 #include "app/render_command.h"
-#include "planner/io/plan_writer.h"
 #include "planner/search/plan_path.h"
 #include "planner/search/stance_search.h"
 #include "planner/util/fork_gate.h"
@@ -97,7 +97,8 @@ void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::o
       << " left when the search ended, drawn in " << std::setprecision(2) << s.drain_s << " s after it\n";
 }
 
-// --partial: the steps from the root to the node closest to the goal, marked partial in the file.
+// --partial: the steps from the root to the node closest to the goal, marked partial in the file
+// (certified like a whole plan: only its certified prefix is written).
 void write_partial_plan(const SearchResult& result, const Scenario& scenario, const std::string& path, std::ostream& err) {
   if (result.closest_node < 0) {
     err << "  no partial plan: the search has no node (the initial stance was not realised)\n";
@@ -106,8 +107,9 @@ void write_partial_plan(const SearchResult& result, const Scenario& scenario, co
   Plan plan = plan_to_node(result.tree, result.closest_node);
   plan.stats = result.plan.stats;
   plan.partial = std::string(to_string(result.status)) + ": " + result.message;
-  write_plan(plan, scenario, path);
-  err << "stanceplan: wrote a PARTIAL plan to " << path << ": " << plan.steps.size()
+  const size_t steps = plan.steps.size();
+  if (write_certified_plan(std::move(plan), scenario, path, true, err) != kExitSuccess) return;
+  err << "stanceplan: wrote a PARTIAL plan to " << path << ": " << steps
       << " steps from the initial stance to the closest stance; it does not reach the goal\n";
 }
 
@@ -158,8 +160,9 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
   const SearchResult result = *session.result();
   if (options.stats) print_search_stats(result, events, out);
   const bool found = result.status == PlanStatus::Found;
-  if (found) {
-    write_plan(result.plan, scenario, options.out);
+  const int written = found ? write_certified_plan(result.plan, scenario, options.out, options.partial, err)
+                            : kExitFailed;
+  if (written == kExitSuccess) {
     out << "wrote " << options.out << ": " << result.plan.steps.size() << " steps, " << result.nodes_expanded
         << " nodes expanded, " << result.solver_calls << " solver calls, " << std::fixed << std::setprecision(2)
         << result.wall_time_s << " s\n";
@@ -169,8 +172,9 @@ int run_plan(const PlanOptions& options, std::ostream& out, std::ostream& err) {
     out << "snapshots: " << stats.images << " images of " << stats.events << " search events in " << options.snapshots
         << " (index " << SnapshotWriter::kIndexFile << ")\n";
     if (options.stats) print_snapshot_stats(stats, options.snapshots, out);
-    if (found) render_final_sequence(options.out, options.snapshots, out, err);
+    if (written == kExitSuccess) render_final_sequence(options.out, options.snapshots, out, err);
   }
+  if (found && written != kExitSuccess) return kExitFailed;  // why: on err (write_certified_plan)
   if (!found) {
     err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message << "\n";
     if (result.closest_node >= 0)

@@ -1,7 +1,7 @@
 #pragma once
 // `stanceplan plan SCENARIO.yaml [--out plan.json] [--threads N] [--time-limit S] [--max-nodes N]
 // [--snapshots DIR [--no-rejected-snapshots]] [--stats]`: runs the stance search on a worker
-// thread (app/live/plan_session.h) and writes the plan (PLAN_FORMAT.md).
+// thread (app/live/plan_session.h) and writes the plan (docs/PLAN_FORMAT.md).
 #include <iosfwd>
 #include <optional>
 #include <string>

@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "app/cli.h"
+#include "app/plan_output.h"
 #include "planner/io/plan_step.h"
 #include "planner/io/plan_writer.h"
 #include "planner/solver/posture_solver.h"
@@ -33,9 +34,11 @@ int run_posture(const PostureOptions& options, std::ostream& out, std::ostream& 
   plan.stats.solver_calls = 1;
   plan.stats.wall_time_s = result.time_ms / 1000.0;
   if (options.out.empty()) {
+    if (!certify_in_memory(plan, scenario, err).passed()) return kExitFailed;
     out << plan_to_json(plan, scenario, "./posture.json") << "\n";
   } else {
-    write_plan(plan, scenario, options.out);
+    if (const int code = write_certified_plan(plan, scenario, options.out, false, err); code != kExitSuccess)
+      return code;
     out << "wrote " << options.out << "\n";
   }
   err << "solved the " << options.stance << " stance in " << result.iterations << " iterations, " << std::fixed

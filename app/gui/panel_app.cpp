@@ -27,7 +27,7 @@
 #include "app/gui/view_texture.h"
 #include "app/live/event_record.h"
 #include "app/live/plan_session.h"
-#include "planner/io/plan_writer.h"
+#include "app/plan_output.h"
 #include "planner/util/fork_gate.h"
 #include "render/png_io.h"
 #include "render/scene_assembly.h"
@@ -234,9 +234,14 @@ void PanelApp::on_search_finished(std::ostream& out, std::ostream& err) {
   try {
     std::filesystem::create_directories(options_.out_dir);
     const std::string path = (std::filesystem::path(options_.out_dir) / "plan.json").string();
-    write_plan(result.plan, scenario_, path);
+    std::ostringstream why;
+    if (write_certified_plan(result.plan, scenario_, path, false, why) != kExitSuccess) {
+      state_.messages.push_back("error: plan found but not saved: " + why.str());
+      err << why.str();
+      return;
+    }
     state_.messages.push_back("plan found: " + std::to_string(result.plan.steps.size()) +
-                              " steps, saved " + path);
+                              " steps, certified, saved " + path);
     out << "panel: " << state_.messages.back() << "\n";
   } catch (const std::exception& e) {
     state_.messages.push_back(std::string("error: ") + e.what());

@@ -1,5 +1,5 @@
 #pragma once
-// The interactive panel (issue 6): a GLFW window with a Dear ImGui user interface over a live
+// The interactive panel: a GLFW window with a Dear ImGui user interface over a live
 // stance search. The 3-D view is drawn by the same off-screen renderer as the PNGs (OSMesa, on a
 // thread of its own) and shown as a texture; the search runs in an app::PlanSession on its worker
 // thread and is held or stepped through the session's StepGate. The planner never knows a window

@@ -11,27 +11,29 @@
 namespace stanceplan {
 namespace {
 
-// PLAN_FORMAT.md tolerances.
+// docs/PLAN_FORMAT.md tolerances.
 constexpr double kDistanceTol = 1e-3;              // m: on the plane, inside the polygon
 constexpr double kNormalTol = 0.5 * M_PI / 180.0;  // rad: normals opposed
 constexpr double kEquilibriumTol = 1e-3;           // x m|g|
 constexpr double kPenetrationTol = 1e-3;           // m
-// Not in PLAN_FORMAT.md: numerical slack for quantities the plan states at full precision.
+// Not in docs/PLAN_FORMAT.md: numerical slack for quantities the plan states at full precision.
 constexpr double kFrictionTol = 1e-6;  // N, plus 1e-6 relative
 constexpr double kTorqueTol = 1e-3;    // N m: stated torques against those implied
 constexpr double kLimitTol = 1e-6;     // rad or m beyond a joint limit
 
 class Checker {
  public:
-  explicit Checker(const LoadedPlan& plan) : plan_(plan), scene_(plan.scene), system_(plan.scene.system) {}
+  Checker(const Scene& scene, double friction, const Plan& plan)
+      : plan_(plan), friction_(friction), scene_(scene), system_(scene.system) {}
 
   CertifyReport run() {
-    const auto& steps = plan_.plan.steps;
+    const auto& steps = plan_.steps;
     for (size_t i = 0; i < steps.size(); ++i) check_step(int(i), steps[i], i > 0 ? &steps[i - 1] : nullptr);
     if (steps.empty()) note("sequence", "", 1.0, 0.0, -1, "the plan has no step");
     CertifyReport report;  // the checks that applied, in a fixed order
     for (const char* name : kOrder)
       if (checks_.count(name)) report.checks.push_back(checks_.at(name));
+    report.first_failed_step = first_failed_step_;
     return report;
   }
 
@@ -46,6 +48,9 @@ class Checker {
             const std::string& detail) {
     auto [it, inserted] = checks_.try_emplace(name, CheckResult{name, unit, 0.0, tolerance, step, ""});
     CheckResult& c = it->second;
+    if (step >= 0 && !(violation <= tolerance) &&
+        (first_failed_step_ < 0 || step < first_failed_step_))
+      first_failed_step_ = step;
     if (violation > c.worst || (std::isnan(violation) && !std::isnan(c.worst))) {
       c.worst = std::isnan(violation) ? INFINITY : violation;
       c.step = step;
@@ -55,7 +60,7 @@ class Checker {
 
   std::string id(SurfaceRef r) const { return scene_.surfaces.id(system_, r); }
 
-  // --- adjacency and step semantics (METHOD.md section 2)
+  // --- adjacency and step semantics (docs/METHOD.md section 2)
   void check_sequence(int i, const PlanStep& step, const PlanStep* previous) {
     auto bad = [&](const std::string& why) { note("sequence", "", 1.0, 0.0, i, why); };
     note("sequence", "", 0.0, 0.0, i, "");
@@ -129,7 +134,7 @@ class Checker {
       const double fn = f.force_W.dot(n);
       const double ft = (f.force_W - fn * n).norm();
       note("unilateral", "N", std::max(0.0, -fn), kFrictionTol, i, name);
-      note("friction", "N", std::max(0.0, ft - plan_.friction * fn - 1e-6 * f.force_W.norm()), kFrictionTol, i, name);
+      note("friction", "N", std::max(0.0, ft - friction_ * fn - 1e-6 * f.force_W.norm()), kFrictionTol, i, name);
     }
   }
 
@@ -237,11 +242,13 @@ class Checker {
     check_collisions(i, step);
   }
 
-  const LoadedPlan& plan_;
+  const Plan& plan_;
+  const double friction_;
   const Scene& scene_;
   const System& system_;
   std::vector<ModelData> data_;
   std::map<std::string, CheckResult> checks_;
+  int first_failed_step_ = -1;
 };
 
 }  // namespace
@@ -250,6 +257,16 @@ bool CertifyReport::passed() const {
   return std::all_of(checks.begin(), checks.end(), [](const CheckResult& c) { return c.passed(); });
 }
 
-CertifyReport certify(const LoadedPlan& plan) { return Checker(plan).run(); }
+CertifyReport certify(const Scene& scene, double friction, const Plan& plan) {
+  return Checker(scene, friction, plan).run();
+}
+
+CertifyReport certify(const LoadedPlan& plan) { return certify(plan.scene, plan.friction, plan.plan); }
+
+const CheckResult* CertifyReport::first_failure() const {
+  for (const CheckResult& c : checks)
+    if (!c.passed()) return &c;
+  return nullptr;
+}
 
 }  // namespace stanceplan

@@ -1,5 +1,5 @@
 #pragma once
-// The independent plan checker (PLAN_FORMAT.md, "What a checker verifies"): re-checks every step
+// The independent plan checker (docs/PLAN_FORMAT.md, "What a checker verifies"): re-checks every step
 // from the plan file and the models alone. It shares the kinematics and the collision geometry
 // with the planner, never the solver: torques are recomputed from point Jacobians, not from the
 // solver's torque code.
@@ -22,9 +22,17 @@ struct CheckResult {
 
 struct CertifyReport {
   std::vector<CheckResult> checks;
+  // The earliest step at which some check exceeds its tolerance (-1 when none does): the steps
+  // before it are a certified plan of their own.
+  int first_failed_step = -1;
   bool passed() const;
+  const CheckResult* first_failure() const;  // the first failed check in report order, or null
 };
 
+// Checks a plan read from its file (`stanceplan certify`).
 CertifyReport certify(const LoadedPlan& plan);
+// The same checks and tolerances on a plan in memory, with the scene it was planned in and the
+// friction coefficient of its contacts (what plan.json states as "friction").
+CertifyReport certify(const Scene& scene, double friction, const Plan& plan);
 
 }  // namespace stanceplan

@@ -261,6 +261,8 @@ class ScenarioReader {
       const YAML::Node c = node[i];
       expect_keys(c, f, {"s1", "s2", "bilateral", "fixed", "placement"});
       StanceContact sc;
+      sc.field = f;
+      sc.line = c.Mark().line >= 0 ? c.Mark().line + 1 : 0;
       sc.contact.s1 = surface(require(c, "s1", f), f + ".s1", scene);
       sc.contact.s2 = surface(require(c, "s2", f), f + ".s2", scene);
       if (c["bilateral"]) sc.contact.bilateral = boolean(c["bilateral"], f + ".bilateral");

@@ -18,6 +18,8 @@ namespace stanceplan {
 struct StanceContact {
   Contact contact;
   std::optional<Placement> placement;  // fixed placement, when the scenario gives one
+  std::string field;                   // where the file states it, for messages:
+  int line = 0;                        // "stances.initial[1]" at line 40 (0: unknown)
 };
 
 struct Scenario {

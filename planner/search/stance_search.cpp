@@ -11,6 +11,7 @@
 #include "planner/model/kinematics.h"
 #include "planner/search/candidates.h"
 #include "planner/search/plan_path.h"
+#include "planner/search/stance_checks.h"
 #include "planner/search/step_target.h"
 #include "planner/solver/posture_solver.h"
 #include "planner/solver/solver_pool.h"
@@ -73,7 +74,7 @@ bool undoes_last_step(const SearchNode& node, const Candidate& c) {
   return !c.add && node.step.action == "add" && node.step.changed && node.step.changed->same_surfaces(c.contact);
 }
 
-// Backtracking, last form (METHOD.md section 3: further configurations for already-expanded
+// Backtracking, last form (docs/METHOD.md section 3: further configurations for already-expanded
 // pairs): once the open and retry queues are empty, the nodes expanded while an earlier milestone
 // was the target are opened again, so that their case-1 candidates aim at the current one. E.g. a
 // foot placed short at the start of a side-step: standing on the other foot already reaches the
@@ -94,7 +95,9 @@ bool reopen_stale(std::vector<int>& expanded_for, int t, std::vector<int>& open)
 }  // namespace
 
 StanceSearch::StanceSearch(const Scenario& scenario, SearchOptions options)
-    : scenario_(scenario), options_(options) {}
+    : scenario_(scenario), options_(options) {
+  check_pinned_stances(scenario);  // before any search: an input error, not a failed search
+}
 
 bool StanceSearch::publish(SearchEvent event) {
   if (gate_ && !gate_->pass()) cancelled_ = true;
@@ -319,7 +322,7 @@ SearchResult StanceSearch::run() {
       for (const Candidate& c : enumerate_candidates(scene, data, tree[n].stance(), goal, options_for_milestone(t)))
         if (!undoes_last_step(tree[n], c)) batch.push_back({n, c, 0});
     } else if (!retries.empty()) {
-      // Backtracking (METHOD.md section 3): the queue is empty, so retry earlier failures from
+      // Backtracking (docs/METHOD.md section 3): the queue is empty, so retry earlier failures from
       // other initial guesses.
       batch.assign(retries.begin(), retries.end());
       retries.clear();

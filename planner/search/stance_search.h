@@ -1,7 +1,7 @@
 #pragma once
 // The multi-contact stance planner of Bouyarmane & Kheddar, "Humanoid Robot Locomotion and
-// Manipulation Step Planning", Advanced Robotics 26(10), 2012 (METHOD.md section 3, Algorithm 1):
-// a greedy best-first search over stances. Each candidate (add a contact: case 1; remove one:
+// Manipulation Step Planning", Advanced Robotics 26(10), 2012 (docs/METHOD.md section 3,
+// Algorithm 1): a greedy best-first search over stances. Each candidate (add a contact: case 1; remove one:
 // case 2) is checked by the IK-statics solver; the cost is the distance to the targeted milestone
 // of the guide path. Adds loop avoidance, backtracking, budgets, cancellation, events and a step
 // gate. Deterministic: the plan does not depend on the thread count.

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <optional>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -14,6 +16,7 @@
 #include "planner/solver/blocks/blocks.h"
 #include "planner/solver/force_balance.h"
 #include "planner/solver/ipopt_adapter.h"
+#include "planner/solver/pinned_pairs.h"
 #include "planner/solver/posture_nlp.h"
 
 namespace stanceplan {
@@ -71,6 +74,54 @@ std::string closest_pair(const Scene& scene, const Eigen::VectorXd& q,
   out << " (closest pair: " << name(pair.a) << " / " << name(pair.b) << " at " << std::fixed
       << std::setprecision(3) << *worst << " m)";
   return out.str();
+}
+
+// E20's bound for a pair: the margin, except that a pair touching or nearly so at the initial
+// guess need not move apart further than it is: a foot just lifted off the floor may stay touching
+// it (d >= 0), which keeps the guess feasible where the distance between parallel faces is least
+// smooth. A pair penetrating at the guess (a bad guess) must reach the full margin.
+double collision_bound(double distance_at_guess, double margin) {
+  return distance_at_guess >= -1e-6 ? std::min(margin, std::max(0.0, distance_at_guess)) : margin;
+}
+
+// The pinned pairs (pinned_pairs.h) at the link poses of `data` against their E20 bounds: an
+// Infeasible result naming the pair furthest below its bound, or nullopt when every one keeps it.
+std::optional<PostureResult> pinned_pair_collision(const Scene& scene,
+                                                   const PostureRequest& request,
+                                                   std::span<const ModelData> data,
+                                                   double margin) {
+  const std::vector<PinnedPairDistance> now = pinned_pair_distances(scene, request, data);
+  if (now.empty()) return std::nullopt;
+  const std::vector<PinnedPairDistance> guess =
+      pinned_pair_distances(scene, request, system_kinematics(scene.system, request.q_init));
+  double worst = 1e-4;  // the tolerance of the collision active set's own check
+  int worst_index = -1;
+  for (size_t i = 0; i < now.size(); ++i) {
+    const double shortfall = collision_bound(guess[i].distance, margin) - now[i].distance;
+    if (shortfall > worst) worst = shortfall, worst_index = int(i);
+  }
+  if (worst_index < 0) return std::nullopt;
+  const PinnedPairDistance& d = now[size_t(worst_index)];
+  const CollisionPair& pair = scene.collision->pairs()[size_t(d.pair)];
+  auto pinned_by = [&](int contact) {
+    if (contact < 0) return std::string("never moves");
+    const Contact& c = request.contacts[size_t(contact)].contact;
+    return "pinned by contact " + scene.surfaces.id(scene.system, c.s1) + " on " +
+           scene.surfaces.id(scene.system, c.s2);
+  };
+  std::ostringstream out;
+  out << "collision: " << collision_link_name(scene, pair.a) << " (" << pinned_by(d.contact_a)
+      << ") and " << collision_link_name(scene, pair.b) << " (" << pinned_by(d.contact_b)
+      << ") are " << std::fixed << std::setprecision(4)
+      << (d.distance < 0 ? -d.distance : d.distance)
+      << (d.distance < 0 ? " m into each other" : " m apart") << ", at least "
+      << d.distance + worst << " m apart expected; fixed placements leave no freedom to part them";
+  PostureResult result;
+  result.status = PostureStatus::Infeasible;
+  result.message = out.str();
+  result.residuals["collision"] = worst;
+  result.blocking_family = "collision";
+  return result;
 }
 
 void normalise_quaternions(const System& system, Eigen::VectorXd& q) {
@@ -278,33 +329,9 @@ void PostureSolver::validate(const PostureRequest& request) const {
 }
 
 std::vector<bool> PostureSolver::excluded_pairs(const PostureRequest& request) const {
-  std::vector<bool> excluded(scene_.collision ? scene_.collision->pairs().size() : 0, false);
-  if (!scene_.collision) return excluded;
-  const CollisionModel& model = *scene_.collision;
-  // Links touching through a contact of the request.
-  for (const ContactTask& task : request.contacts) {
-    const Contact& c = task.contact;
-    const int p = model.find_pair(c.s1.entity, scene_.surfaces.get(c.s1).link, c.s2.entity,
-                                  scene_.surfaces.get(c.s2).link);
-    if (p >= 0) excluded[p] = true;
-  }
-  // Links whose pose this request fixes: never moving, or pinned to a non-moving body by a contact
-  // with a fixed placement (E8-E13 fix all 6 relative degrees of freedom). Between two such links
-  // the distance is a constant of the program: its row would only repeat the contact equalities
-  // (a degenerate, rank-deficient constraint), so it is left out.
-  std::vector<char> fixed_pose(model.links().size(), 0);
-  for (size_t i = 0; i < model.links().size(); ++i) fixed_pose[i] = !model.links()[i].moves;
-  for (const ContactTask& task : request.contacts) {
-    if (!task.placement) continue;
-    const Contact& c = task.contact;
-    const int a = model.find_link(c.s1.entity, scene_.surfaces.get(c.s1).link);
-    const int b = model.find_link(c.s2.entity, scene_.surfaces.get(c.s2).link);
-    if (a < 0 || b < 0) continue;
-    if (!model.links()[b].moves) fixed_pose[a] = 1;
-    if (!model.links()[a].moves) fixed_pose[b] = 1;
-  }
-  for (size_t p = 0; p < model.pairs().size(); ++p)
-    if (fixed_pose[model.pairs()[p].a] && fixed_pose[model.pairs()[p].b]) excluded[p] = true;
+  const std::vector<PairExclusion> why = pair_exclusions(scene_, request);
+  std::vector<bool> excluded(why.size(), false);
+  for (size_t p = 0; p < why.size(); ++p) excluded[p] = why[p] != PairExclusion::None;
   return excluded;
 }
 
@@ -318,6 +345,15 @@ PostureResult PostureSolver::solve(const PostureRequest& request) const {
     result.message = std::move(reason);
     return result;
   }
+  const bool collisions = scene_.collision && options_.enforce_collisions;
+  // Pinned pairs have no row in the program: their distance follows from the fixed placements
+  // alone, so a stance that puts them into each other is infeasible before any solve.
+  if (collisions) {
+    std::vector<ModelData> pinned = system_kinematics(scene_.system, request.q_init);
+    place_pinned_links(scene_, request, pinned);
+    if (auto failed = pinned_pair_collision(scene_, request, pinned, options_.collision_margin))
+      return *failed;
+  }
   PostureResult result = solve_once(request, options_);
   // No NaN reaches a plan: a "solved" result with a non-finite number in it is a failure.
   if (const std::string part = result.non_finite_part();
@@ -325,6 +361,16 @@ PostureResult PostureSolver::solve(const PostureRequest& request) const {
     result.status = PostureStatus::NumericalFailure;
     result.message = "non-finite " + part + " in the solution (" + result.message + ")";
   }
+  // ... and checked again on the solution, where the placements hold to the solver's tolerance.
+  if (result.status == PostureStatus::Solved && collisions)
+    if (auto failed = pinned_pair_collision(scene_, request,
+                                            system_kinematics(scene_.system, result.q),
+                                            options_.collision_margin)) {
+      failed->q = result.q;
+      failed->iterations = result.iterations;
+      failed->time_ms = result.time_ms;
+      return *failed;
+    }
   if (result.status != PostureStatus::Solved && options_.diagnose_infeasibility)
     diagnose(request, result);
   return result;
@@ -361,14 +407,9 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     for (size_t p = 0; p < initial_distance.size(); ++p)
       if (initial_distance[p] < options.collision_active_distance) active.push_back(int(p));
   }
-  // E20 with the margin, except that a pair touching or nearly so at the initial guess need not
-  // move apart further than it is: a foot just lifted off the floor may stay touching it (d >= 0),
-  // which keeps the guess feasible where the distance between parallel faces is least smooth. A
-  // pair penetrating at the guess (a bad guess) must reach the full margin.
+  // E20 with the margin (collision_bound).
   auto bound_of = [&](int p) {
-    const double d = initial_distance[p];
-    return d >= -1e-6 ? std::min(options.collision_margin, std::max(0.0, d))
-                      : options.collision_margin;
+    return collision_bound(initial_distance[p], options.collision_margin);
   };
   auto bounds_of = [&](const std::vector<int>& pairs) {
     std::vector<double> bounds;

@@ -1,5 +1,5 @@
 #pragma once
-// The inverse-kinematics-and-statics solver of METHOD.md section 4: one nonlinear program over
+// The inverse-kinematics-and-statics solver of docs/METHOD.md section 4: one nonlinear program over
 // (q, lambda) per call, solved by Ipopt with exact first derivatives. Thread-safe: solve() may be
 // called from several threads (Ipopt itself is serialised inside the adapter).
 #include <memory>
