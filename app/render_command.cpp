@@ -11,9 +11,9 @@
 
 #include "planner/io/plan_reader.h"
 #include "planner/util/input_error.h"
-#include "render/gif_writer.h"
-#include "render/png_io.h"
-#include "render/sequence.h"
+#include "render/figures/sequence.h"
+#include "render/image/gif_writer.h"
+#include "render/image/png_io.h"
 
 namespace stanceplan::app {
 namespace {

@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include "planner/model/kinematics.h"
-#include "render/png_io.h"
+#include "render/image/png_io.h"
 #include "render/renderer.h"
 #include "tests/support/scenes.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // What a picture shows and how it looks. The defaults are tuned for paper figures of a humanoid
 // scene (sizes in metres); tests switch off the decorations to assert exact pixel values.
-#include "render/color.h"
+#include "render/image/color.h"
 
 namespace stanceplan::render {
 

@@ -6,17 +6,17 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "render/annotations.h"
-#include "render/contact_overlays.h"
-#include "render/edge_smoothing.h"
-#include "render/gl.h"
-#include "render/gl_context.h"
-#include "render/gpu_mesh.h"
-#include "render/lighting.h"
-#include "render/render_targets.h"
-#include "render/scene_assembly.h"
-#include "render/shader_program.h"
-#include "render/shaders.h"
+#include "render/figures/annotations.h"
+#include "render/gl/gl.h"
+#include "render/gl/gl_context.h"
+#include "render/gl/gpu_mesh.h"
+#include "render/gl/render_targets.h"
+#include "render/gl/shader_program.h"
+#include "render/gl/shaders.h"
+#include "render/image/edge_smoothing.h"
+#include "render/scene/contact_overlays.h"
+#include "render/scene/lighting.h"
+#include "render/scene/scene_assembly.h"
 
 namespace stanceplan::render {
 namespace {

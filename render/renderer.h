@@ -17,11 +17,11 @@
 
 #include "planner/io/plan.h"
 #include "planner/scene/scene.h"
-#include "render/camera.h"
-#include "render/draw_list.h"
-#include "render/image.h"
-#include "render/mesh_library.h"
+#include "render/image/image.h"
 #include "render/render_style.h"
+#include "render/scene/camera.h"
+#include "render/scene/draw_list.h"
+#include "render/scene/mesh_library.h"
 
 namespace stanceplan::render {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/gui/window_gl.h"
-#include "render/image.h"
+#include "render/image/image.h"
 
 struct GLFWwindow;
 

@@ -4,7 +4,7 @@
 // eye along the line of sight. Plain math over render::Camera; no window, no GL.
 #include <Eigen/Core>
 
-#include "render/camera.h"
+#include "render/scene/camera.h"
 
 namespace stanceplan::gui {
 

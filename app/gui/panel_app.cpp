@@ -29,9 +29,9 @@
 #include "app/live/plan_session.h"
 #include "app/plan_output.h"
 #include "planner/util/fork_gate.h"
-#include "render/png_io.h"
-#include "render/scene_assembly.h"
-#include "render/step_caption.h"
+#include "render/figures/step_caption.h"
+#include "render/image/png_io.h"
+#include "render/scene/scene_assembly.h"
 
 namespace stanceplan::app {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <utility>
 
-#include "render/png_io.h"
-#include "render/sequence.h"
+#include "render/figures/sequence.h"
+#include "render/image/png_io.h"
 
 namespace stanceplan::gui {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The panel's own colours as plain values (no ImGui): ui_style.cpp applies them, and the window
 // test looks for them in screenshots.
-#include "render/color.h"
+#include "render/image/color.h"
 
 namespace stanceplan::gui {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "app/gui/window_gl.h"
-#include "render/image.h"
+#include "render/image/image.h"
 
 namespace stanceplan::gui {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The few OpenGL calls the panel makes in the window's own context, through function pointers
-// from glfwGetProcAddress. The process links gl* from libOSMesa for the renderer (render/gl.h);
+// from glfwGetProcAddress. The process links gl* from libOSMesa for the renderer (render/gl/gl.h);
 // calling those symbols here would reach whichever context Mesa's shared dispatch has current on
 // this thread, which only works by accident of both being Mesa (docs/DEPENDENCIES.md section 5). A
 // table per context is the portable way; ImGui's OpenGL3 backend loads its own the same way.

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/io/plan.h"
-#include "render/step_caption.h"
+#include "render/figures/step_caption.h"
 
 namespace stanceplan::app {
 namespace {

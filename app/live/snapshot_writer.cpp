@@ -10,7 +10,7 @@
 #include "app/live/event_record.h"
 #include "app/live/thread_priority.h"
 #include "planner/util/atomic_file.h"
-#include "render/png_io.h"
+#include "render/image/png_io.h"
 #include "render/renderer.h"
 
 namespace stanceplan::app {

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "planner/collision/mesh_loader.h"
 #include "planner/collision/srdf.h"
+#include "planner/model/mesh_file.h"
 #include "planner/util/input_error.h"
 
 namespace stanceplan {
@@ -94,6 +94,7 @@ MeshHull HullCache::get(const std::string& mesh_path, const Eigen::Vector3d& sca
   auto found = hulls_.find(key);
   if (found != hulls_.end()) return found->second;
   const TriangleMesh mesh = load_mesh(mesh_path, scale);
+  require_finite_vertices(mesh, mesh_path);
   MeshHull entry;
   try {
     entry.hull = std::make_shared<const ConvexHull>(convex_hull(mesh.vertices, options));

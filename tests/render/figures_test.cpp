@@ -4,16 +4,16 @@
 
 #include <map>
 
-#include "render/camera.h"
-#include "render/color_quantizer.h"
-#include "render/contact_overlays.h"
-#include "render/edge_smoothing.h"
-#include "render/gif_writer.h"
-#include "render/png_io.h"
-#include "render/sequence.h"
 #include "planner/io/scenario.h"
-#include "render/step_caption.h"
-#include "render/text.h"
+#include "render/figures/sequence.h"
+#include "render/figures/step_caption.h"
+#include "render/image/color_quantizer.h"
+#include "render/image/edge_smoothing.h"
+#include "render/image/gif_writer.h"
+#include "render/image/png_io.h"
+#include "render/image/text.h"
+#include "render/scene/camera.h"
+#include "render/scene/contact_overlays.h"
 #include "tests/render/render_fixtures.h"
 
 namespace stanceplan::render {

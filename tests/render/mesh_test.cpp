@@ -2,9 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "planner/util/input_error.h"
-#include "render/mesh_data.h"
-#include "render/mesh_file.h"
-#include "render/mesh_library.h"
+#include "render/scene/mesh_data.h"
+#include "render/scene/mesh_file.h"
+#include "render/scene/mesh_library.h"
 #include "tests/render/render_fixtures.h"
 
 namespace stanceplan::render {

@@ -11,7 +11,7 @@
 
 #include "app/render_command.h"
 #include "planner/util/input_error.h"
-#include "render/png_io.h"
+#include "render/image/png_io.h"
 #include "tests/render/render_fixtures.h"
 
 namespace stanceplan::app {

@@ -4,8 +4,8 @@
 
 #include "planner/io/plan_reader.h"
 #include "planner/model/urdf_loader.h"
+#include "render/figures/sequence.h"
 #include "render/renderer.h"
-#include "render/sequence.h"
 #include "tests/render/render_fixtures.h"
 
 namespace stanceplan::render {

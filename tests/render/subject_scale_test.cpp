@@ -1,9 +1,10 @@
-// Overlay sizes follow the subject's size (render/sequence.cpp): a hand 0.3 m across gets force
-// arrows, rings and markers scaled down with it, so that they do not hide the hand and the ball.
+// Overlay sizes follow the subject's size (render/figures/sequence.cpp): a hand 0.3 m across gets
+// force arrows, rings and markers scaled down with it, so that they do not hide the hand and the
+// ball.
 #include <gtest/gtest.h>
 
 #include "planner/io/plan_reader.h"
-#include "render/sequence.h"
+#include "render/figures/sequence.h"
 #include "tests/render/render_fixtures.h"
 #include "tests/support/cli.h"
 #include "tests/support/paths.h"

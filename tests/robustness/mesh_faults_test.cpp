@@ -1,14 +1,15 @@
-// Corrupt and empty mesh files: the collision loader (planner/collision/mesh_loader.h) and the
-// renderer's loader (render/mesh_file.h) end in an InputError naming the file; a URDF whose
-// collision mesh is corrupt makes `stanceplan inspect` exit 1 with the mesh named.
+// Corrupt and empty mesh files: the mesh loader (planner/model/mesh_file.h), as the collision
+// hulls use it (with require_finite_vertices) and as the renderer does (render/scene/mesh_file.h),
+// ends in an InputError naming the file; a URDF whose collision mesh is corrupt makes
+// `stanceplan inspect` exit 1 with the mesh named.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "planner/collision/mesh_loader.h"
+#include "planner/model/mesh_file.h"
 #include "planner/util/input_error.h"
-#include "render/mesh_file.h"
+#include "render/scene/mesh_file.h"
 #include "tests/support/cli.h"
 #include "tests/support/paths.h"
 
@@ -40,7 +41,7 @@ const char* kNanStl =
 
 std::string collision_error(const std::string& path) {
   try {
-    load_mesh(path, Eigen::Vector3d::Ones());
+    require_finite_vertices(load_mesh(path, Eigen::Vector3d::Ones()), path);
   } catch (const InputError& e) {
     return e.what();
   }

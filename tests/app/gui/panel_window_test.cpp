@@ -14,7 +14,7 @@
 
 #include "app/gui/panel_layout.h"
 #include "app/gui/panel_palette.h"
-#include "render/png_io.h"
+#include "render/image/png_io.h"
 #include "render/render_style.h"
 #include "tests/support/paths.h"
 

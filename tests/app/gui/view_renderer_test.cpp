@@ -8,9 +8,9 @@
 
 #include "app/gui/panel_exports.h"
 #include "app/live/plan_session.h"
-#include "render/png_io.h"
-#include "render/sequence.h"
-#include "render/step_caption.h"
+#include "render/figures/sequence.h"
+#include "render/figures/step_caption.h"
+#include "render/image/png_io.h"
 #include "tests/support/paths.h"
 
 namespace stanceplan::gui {

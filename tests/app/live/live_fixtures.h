@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/png_io.h"
+#include "render/image/png_io.h"
 
 namespace stanceplan::test {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "planner/collision/convex_hull.h"
-#include "planner/collision/mesh_loader.h"
+#include "planner/model/mesh_file.h"
 #include "planner/util/input_error.h"
 #include "tests/planner/collision/collision_test_scene.h"
 #include "tests/support/paths.h"

@@ -11,8 +11,8 @@
 #include <random>
 
 #include "planner/collision/convex_hull.h"
-#include "planner/collision/mesh_loader.h"
 #include "planner/collision/polytope_penetration.h"
+#include "planner/model/mesh_file.h"
 #include "tests/support/paths.h"
 
 namespace stanceplan {
