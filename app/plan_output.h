@@ -7,7 +7,7 @@
 #include <string>
 
 #include "planner/certify/certify.h"
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "planner/io/scenario.h"
 
 namespace stanceplan::app {

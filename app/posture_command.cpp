@@ -5,7 +5,7 @@
 
 #include "app/cli.h"
 #include "app/plan_output.h"
-#include "planner/io/plan_step.h"
+#include "planner/plan/plan_step.h"
 #include "planner/io/plan_writer.h"
 #include "planner/solver/posture_solver.h"
 

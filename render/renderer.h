@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "planner/scene/scene.h"
 #include "render/image/image.h"
 #include "render/render_style.h"

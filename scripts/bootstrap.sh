@@ -12,6 +12,8 @@ packages=(
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
   clang-14 libclang-rt-14-dev  # libFuzzer targets (fuzz/, scripts/run_fuzz.sh)
+  clang-format                 # scripts/check_format.sh (a test)
+  git                          # scripts/check_format.sh lists the tracked files
 )
 
 missing=()

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "render/figures/step_caption.h"
 
 namespace stanceplan::app {

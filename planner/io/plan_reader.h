@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "planner/scene/scene_builder.h"
 
 namespace stanceplan {

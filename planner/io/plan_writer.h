@@ -3,7 +3,7 @@
 // the plan file's folder.
 #include <string>
 
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "planner/io/scenario.h"
 
 namespace stanceplan {

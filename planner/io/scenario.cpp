@@ -419,20 +419,6 @@ class ScenarioReader {
 
 }  // namespace
 
-Stance Scenario::stance(const std::vector<StanceContact>& contacts) const {
-  std::vector<Contact> list;
-  for (const StanceContact& c : contacts) list.push_back(c.contact);
-  return Stance(std::move(list));
-}
-
-PostureRequest Scenario::loaded_request(const std::vector<StanceContact>& contacts, const Eigen::VectorXd& q) const {
-  PostureRequest request;
-  for (const StanceContact& c : contacts) request.contacts.push_back({c.contact, true, c.placement, std::nullopt, {}});
-  request.q_init = q;
-  request.q_ref = q;
-  return request;
-}
-
 Scenario load_scenario(const std::string& path) {
   Scenario s = ScenarioReader(path).read();
   s.scene.gravity = s.spec.gravity;

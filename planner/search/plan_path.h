@@ -3,7 +3,7 @@
 // when no plan is found, the partial plan to the node closest to the goal (`plan --partial`).
 #include <vector>
 
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "planner/search/stance_search.h"
 
 namespace stanceplan {

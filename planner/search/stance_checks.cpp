@@ -14,15 +14,15 @@ namespace {
 // Deeper than this is a fault of the file (the collision active set's own tolerance).
 constexpr double kPenetrationTolerance = 1e-4;
 
-std::string describe(const Scenario& scenario, const StanceContact& c) {
-  const Scene& scene = scenario.scene;
+std::string describe(const Problem& problem, const StanceContact& c) {
+  const Scene& scene = problem.scene;
   return c.field + " (" + scene.surfaces.id(scene.system, c.contact.s1) + " on " +
          scene.surfaces.id(scene.system, c.contact.s2) + ")";
 }
 
-void check_stance(const Scenario& scenario, const std::vector<StanceContact>& stance) {
-  const Scene& scene = scenario.scene;
-  const PostureRequest request = scenario.loaded_request(stance, scenario.initial_configuration);
+void check_stance(const Problem& problem, const std::vector<StanceContact>& stance) {
+  const Scene& scene = problem.scene;
+  const PostureRequest request = problem.loaded_request(stance, problem.initial_configuration);
   std::vector<ModelData> data = system_kinematics(scene.system, request.q_init);
   place_pinned_links(scene, request, data);
   const PinnedPairDistance* worst = nullptr;
@@ -41,23 +41,23 @@ void check_stance(const Scenario& scenario, const std::vector<StanceContact>& st
   std::ostringstream what;
   what << std::fixed << std::setprecision(4);
   if (by_a && by_b)
-    what << "the fixed placements of " << describe(scenario, *by_a) << " and "
-         << describe(scenario, *by_b) << " put " << a << " and " << b << " "
+    what << "the fixed placements of " << describe(problem, *by_a) << " and "
+         << describe(problem, *by_b) << " put " << a << " and " << b << " "
          << -worst->distance << " m into each other";
   else
-    what << "the fixed placement of " << describe(scenario, *by_a) << " puts " << a << " "
+    what << "the fixed placement of " << describe(problem, *by_a) << " puts " << a << " "
          << -worst->distance << " m into " << b;
   const StanceContact& at = by_b ? *by_b : *by_a;  // the later entry, where the fault shows
-  throw InputError(scenario.file + (at.line > 0 ? ":" + std::to_string(at.line) : "") + ": " +
+  throw InputError(problem.file + (at.line > 0 ? ":" + std::to_string(at.line) : "") + ": " +
                    at.field + ": " + what.str());
 }
 
 }  // namespace
 
-void check_pinned_stances(const Scenario& scenario) {
-  if (!scenario.scene.collision || !scenario.solver.enforce_collisions) return;
-  check_stance(scenario, scenario.initial_stance);
-  check_stance(scenario, scenario.goal_stance);
+void check_pinned_stances(const Problem& problem) {
+  if (!problem.scene.collision || !problem.solver.enforce_collisions) return;
+  check_stance(problem, problem.initial_stance);
+  check_stance(problem, problem.goal_stance);
 }
 
 }  // namespace stanceplan

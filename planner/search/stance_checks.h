@@ -1,8 +1,8 @@
 #pragma once
-// Checks of a scenario's stances that need its models, made before any search (the file itself
-// was read by io/scenario.h): what the search could never repair is an input error naming the
-// file, the stance entries and what is wrong, not a failed search.
-#include "planner/io/scenario.h"
+// Checks of a problem's stances that need its models, made before any search: what the search
+// could never repair is an input error naming the file, the stance entries and what is wrong, not
+// a failed search.
+#include "planner/plan/problem.h"
 
 namespace stanceplan {
 
@@ -12,6 +12,6 @@ namespace stanceplan {
 // placements of stances.initial[0] (robot/l_sole on env/floor) and stances.initial[1]
 // (robot/r_sole on env/floor) put robot/l_foot and robot/r_foot 0.0200 m into each other".
 // Nothing is checked without collision geometry or with collision avoidance switched off.
-void check_pinned_stances(const Scenario& scenario);
+void check_pinned_stances(const Problem& problem);
 
 }  // namespace stanceplan

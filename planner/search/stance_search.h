@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "planner/io/plan.h"
-#include "planner/io/scenario.h"
+#include "planner/plan/plan.h"
+#include "planner/plan/problem.h"
 #include "planner/search/guide_path.h"
 #include "planner/search/search_events.h"
+#include "planner/search/search_options.h"
 
 namespace stanceplan {
 
@@ -45,7 +46,7 @@ struct SearchResult {
 
 class StanceSearch {
  public:
-  StanceSearch(const Scenario& scenario, SearchOptions options);
+  StanceSearch(const Problem& problem, SearchOptions options);
 
   void set_observer(SearchObserver observer) { observer_ = std::move(observer); }
   void set_gate(StepGate* gate) { gate_ = gate; }
@@ -56,10 +57,11 @@ class StanceSearch {
 
  private:
   struct Attempt;
+  class Run;  // one run, in named parts (search_run.h)
   bool publish(SearchEvent event);
   bool stopped() const { return cancelled_.load(); }
 
-  const Scenario& scenario_;
+  const Problem& problem_;
   SearchOptions options_;
   SearchObserver observer_;
   StepGate* gate_ = nullptr;

@@ -168,6 +168,15 @@ void record_physics(PostureNlp& nlp, const PostureRequest& request, PostureResul
   result.torques = state.tau;
 }
 
+// What a round's solution exceeds among the rows left out of its program.
+struct RoundExcess {
+  double torque = 0.0;   // worst |tau| / effort - 1 over every limited joint
+  double polygon = 0.0;  // worst vertex distance outside an edge over every polygon row
+  std::vector<Eigen::VectorXd> polygon_margins;  // per contact, per polygon row
+};
+RoundExcess record_round(PostureNlp& nlp, const Eigen::VectorXd& x, const PostureRequest& request,
+                         const SolverOptions& options, PostureResult& result);
+
 // Calls visit(entity, dof, |tau| / effort) for every dof of a robot with an effort limit (the
 // rows of TorqueLimitBlock).
 template <class Visit>
@@ -280,6 +289,65 @@ void guess_forces_from(const PostureResult& result, PostureRequest& request) {
       guess.resize(size_t(f.vertex) + 1, Eigen::Vector3d::Zero());
     guess[size_t(f.vertex)] = f.force_W;
   }
+}
+
+// Pairs outside the active set whose distance d fell below their bound join it (sorted later);
+// returns the worst penetration over every pair.
+double grow_collision_set(const std::vector<double>& d, const std::vector<double>& bound,
+                          std::vector<int>& active) {
+  double worst = 0.0;
+  for (size_t p = 0; p < d.size(); ++p) {
+    if (d[p] < bound[p] - 1e-4 && std::find(active.begin(), active.end(), int(p)) == active.end())
+      active.push_back(int(p));
+    if (d[p] < 0) worst = std::max(worst, -d[p]);
+  }
+  return worst;
+}
+
+// Why a solve whose active sets still grow after the last allowed round is infeasible.
+std::string rounds_exhausted(bool collisions_grew, bool torques_grew, int rounds) {
+  return std::string(collisions_grew ? "collision: pairs still closer than the margin"
+                     : torques_grew  ? "torque_limits: joints still beyond their effort"
+                                     : "polygon: vertices still outside their polygon") +
+         " after " + std::to_string(rounds) + " active-set rounds";
+}
+
+// Appends the worst violated family to a failed result's message and, when it is collision (and
+// `excluded` is given: collisions enforced), the pair nearest to violating the margin.
+void name_worst_family(const Scene& scene, const std::vector<bool>* excluded, double margin,
+                       PostureResult& result) {
+  if (result.residuals.empty()) return;
+  result.message += "; worst violated family: " + result.worst_family();
+  if (excluded && result.worst_family() == "collision" && result.q.size() == scene.system.nq())
+    result.message += closest_pair(scene, result.q, *excluded, margin);
+}
+
+// The round's solution into `result`: configuration, forces, placements, torques and the residual
+// of every family, the torque and polygon rows left out of the program included.
+RoundExcess record_round(PostureNlp& nlp, const Eigen::VectorXd& x, const PostureRequest& request,
+                         const SolverOptions& options, PostureResult& result) {
+  const System& system = nlp.state().scene.system;
+  result.residuals.clear();
+  result.forces.clear();
+  result.placements.clear();
+  record_residuals(nlp, x, result);
+  result.q = x.head(system.nq());
+  nlp.state().set_x(x.data());
+  record_physics(nlp, request, result);
+  RoundExcess excess;
+  excess.torque = worst_torque_excess(system, result.torques);
+  if (options.enforce_torque_limits)  // every limited joint, the rows left out included
+    result.residuals["torque_limits"] = std::max(result.residuals["torque_limits"], excess.torque);
+  excess.polygon_margins = polygon_margins(nlp.state());
+  bool has_polygon_rows = false;  // every polygon row, the ones left out included
+  for (const Eigen::VectorXd& rows : excess.polygon_margins) {
+    if (rows.size() == 0) continue;
+    has_polygon_rows = true;
+    excess.polygon = std::max(excess.polygon, -rows.minCoeff());
+  }
+  if (has_polygon_rows)
+    result.residuals["polygon"] = std::max(result.residuals["polygon"], excess.polygon);
+  return excess;
 }
 
 }  // namespace
@@ -416,6 +484,11 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     for (int p : pairs) bounds.push_back(bound_of(p));
     return bounds;
   };
+  auto bounds_of_all = [&] {
+    std::vector<double> bounds(initial_distance.size());
+    for (size_t p = 0; p < bounds.size(); ++p) bounds[p] = bound_of(int(p));
+    return bounds;
+  };
   // E19 rows far from their limits at the start are left out until a solution exceeds them, and
   // so are the polygon rows of vertices far inside their edges until one crosses.
   const StartingPoint start_point = prepare_start(scene_, request, options);
@@ -434,40 +507,16 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     result.message = run.message;
     result.objective = run.objective;
     if (run.x.size() != nlp.n()) break;
-    Eigen::VectorXd x = run.x;
-    result.residuals.clear();
-    result.forces.clear();
-    result.placements.clear();
-    record_residuals(nlp, x, result);
-    result.q = x.head(scene_.system.nq());
-    nlp.state().set_x(x.data());
-    record_physics(nlp, request, result);
-    const double torque_excess = worst_torque_excess(scene_.system, result.torques);
-    if (options.enforce_torque_limits)  // every limited joint, the rows left out included
-      result.residuals["torque_limits"] =
-          std::max(result.residuals["torque_limits"], torque_excess);
-    const std::vector<Eigen::VectorXd> margins = polygon_margins(nlp.state());
-    double polygon_excess = 0.0;  // every polygon row, the ones left out included
-    bool has_polygon_rows = false;
-    for (const Eigen::VectorXd& rows : margins) {
-      if (rows.size() == 0) continue;
-      has_polygon_rows = true;
-      polygon_excess = std::max(polygon_excess, -rows.minCoeff());
-    }
-    if (has_polygon_rows)
-      result.residuals["polygon"] = std::max(result.residuals["polygon"], polygon_excess);
+    const RoundExcess excess = record_round(nlp, run.x, request, options, result);
+    const double torque_excess = excess.torque, polygon_excess = excess.polygon;
+    const std::vector<Eigen::VectorXd>& margins = excess.polygon_margins;
     if (run.status != PostureStatus::Solved) break;
     // Pairs outside the active set may have come closer than the margin: add them.
     const size_t before = active.size();
     if (collisions) {
-      const auto d = pair_distances(scene_, result.q, excluded, options.collision_margin);
-      double worst = 0.0;
-      for (size_t p = 0; p < d.size(); ++p) {
-        if (d[p] < bound_of(int(p)) - 1e-4 &&
-            std::find(active.begin(), active.end(), int(p)) == active.end())
-          active.push_back(int(p));
-        if (d[p] < 0) worst = std::max(worst, -d[p]);
-      }
+      const double worst = grow_collision_set(
+          pair_distances(scene_, result.q, excluded, options.collision_margin), bounds_of_all(),
+          active);
       result.residuals["collision"] = std::max(result.residuals["collision"], worst);
     }
     // Torques beyond a limit left out: add those rows, and the ones near their limits.
@@ -481,11 +530,7 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     if (active.size() == before && !torques_grew && !polygons_grew) break;
     if (round + 1 >= options.max_active_set_rounds) {
       result.status = PostureStatus::Infeasible;
-      result.message =
-          std::string(active.size() != before ? "collision: pairs still closer than the margin"
-                      : torques_grew          ? "torque_limits: joints still beyond their effort"
-                                              : "polygon: vertices still outside their polygon") +
-          " after " + std::to_string(round + 1) + " active-set rounds";
+      result.message = rounds_exhausted(active.size() != before, torques_grew, round + 1);
       break;
     }
     std::sort(active.begin(), active.end());
@@ -493,11 +538,8 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     guess_forces_from(result, request);
   }
   if (result.q.size() == scene_.system.nq()) normalise_quaternions(scene_.system, result.q);
-  if (result.status != PostureStatus::Solved && !result.residuals.empty()) {
-    result.message += "; worst violated family: " + result.worst_family();
-    if (collisions && result.worst_family() == "collision" && result.q.size() == scene_.system.nq())
-      result.message += closest_pair(scene_, result.q, excluded, options.collision_margin);
-  }
+  if (result.status != PostureStatus::Solved)
+    name_worst_family(scene_, collisions ? &excluded : nullptr, options.collision_margin, result);
   result.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;

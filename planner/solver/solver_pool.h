@@ -46,10 +46,4 @@ class SolverPool {
   std::atomic<bool>* shared_cancel_ = nullptr;  // in memory shared with the workers
 };
 
-// The wire format between the parent and the workers (exposed for tests).
-std::string serialize(const PostureRequest& request);
-PostureRequest deserialize_request(const std::string& bytes);
-std::string serialize(const PostureResult& result);
-PostureResult deserialize_result(const std::string& bytes);
-
 }  // namespace stanceplan

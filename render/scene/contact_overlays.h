@@ -4,7 +4,7 @@
 // centre of mass with its ground projection, and the support polygon of the contacts on the ground.
 #include <vector>
 
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "planner/scene/scene.h"
 #include "render/render_style.h"
 #include "render/scene/draw_list.h"

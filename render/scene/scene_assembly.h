@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "planner/io/plan.h"
 #include "planner/model/model_data.h"
+#include "planner/plan/plan.h"
 #include "planner/scene/scene.h"
 #include "render/render_style.h"
 #include "render/scene/draw_list.h"

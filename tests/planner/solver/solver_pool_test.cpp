@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "planner/solver/solver_pool.h"
+#include "planner/solver/solver_wire.h"
 #include "tests/support/scenes.h"
 
 namespace stanceplan {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "planner/io/plan.h"
+#include "planner/plan/plan.h"
 #include "planner/solver/posture_request.h"
 
 namespace stanceplan {

@@ -1,4 +1,4 @@
-#include "planner/io/plan_step.h"
+#include "planner/plan/plan_step.h"
 
 namespace stanceplan {
 

@@ -1,0 +1,74 @@
+#include "planner/search/search_event_builders.h"
+
+namespace stanceplan {
+
+SearchEvent node_event(SearchEventKind kind, const SearchNode& node, int milestone, int nodes) {
+  SearchEvent e;
+  e.kind = kind;
+  e.node = node.id;
+  e.stance = node.stance();
+  e.q = node.q();
+  e.milestone = milestone;
+  e.nodes = nodes;
+  return e;
+}
+
+SearchEvent expansion_event(const SearchNode& node, int milestone, int nodes) {
+  SearchEvent e = node_event(SearchEventKind::Expansion, node, milestone, nodes);
+  e.contacts = node.step.contacts;
+  e.forces = node.step.forces;
+  e.iterations = node.step.iterations;
+  e.torques = node.step.torques;
+  return e;
+}
+
+SearchEvent root_event(const SearchNode& root, const PostureResult& solved) {
+  SearchEvent e;
+  e.kind = SearchEventKind::Candidate;
+  e.node = root.id;
+  e.stance = root.stance();
+  e.accepted = true;
+  e.q = root.q();
+  e.contacts = root.step.contacts;
+  e.forces = root.step.forces;
+  e.time_ms = solved.time_ms;
+  e.iterations = solved.iterations;
+  e.torques = solved.torques;
+  e.residuals = solved.residuals;
+  e.nodes = 1;
+  return e;
+}
+
+SearchEvent candidate_event(int parent, const Stance& stance, bool add, const Contact& changed,
+                            const PostureRequest& request, const PostureResult& solved) {
+  SearchEvent e;
+  e.kind = SearchEventKind::Candidate;
+  e.parent = parent;
+  e.stance = stance;
+  e.candidate_case = add ? CandidateCase::Add : CandidateCase::Remove;
+  e.changed = changed;
+  e.status = solved.status;
+  e.message = solved.message;
+  e.q = solved.q;
+  for (const ContactTask& task : request.contacts)
+    e.contacts.push_back({task.contact, task.loaded});
+  e.forces = solved.forces;
+  e.time_ms = solved.time_ms;
+  e.iterations = solved.iterations;
+  e.torques = solved.torques;
+  e.residuals = solved.residuals;
+  return e;
+}
+
+SearchEvent failure_event(const std::string& message, const std::vector<SearchNode>& tree,
+                          int closest) {
+  SearchEvent e;
+  e.kind = SearchEventKind::Failure;
+  e.message = message;
+  e.node = closest;
+  e.nodes = int(tree.size());
+  if (closest >= 0) e.stance = tree[size_t(closest)].stance();
+  return e;
+}
+
+}  // namespace stanceplan

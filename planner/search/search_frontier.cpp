@@ -1,0 +1,125 @@
+// The tree and its frontier (search_run.h): what a node costs, when it is the goal, when it is
+// already in the tree, which node is closest to the goal, and the milestones the tree reaches.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "planner/plan/plan_step.h"
+#include "planner/search/search_event_builders.h"
+#include "planner/search/search_run.h"
+
+namespace stanceplan {
+namespace {
+
+int stance_difference(const Stance& a, const Stance& b) {
+  int d = 0;
+  for (const Contact& c : a.contacts()) d += b.find(c) < 0;
+  for (const Contact& c : b.contacts()) d += a.find(c) < 0;
+  return d;
+}
+
+// Two placements of one contact within the search's tolerances.
+bool same_placement(const Placement& a, const Placement& b, const SearchOptions& options) {
+  return std::abs(a.x - b.x) <= options.placement_tolerance &&
+         std::abs(a.y - b.y) <= options.placement_tolerance &&
+         std::abs(std::remainder(a.theta - b.theta, 2 * M_PI)) <= options.orientation_tolerance;
+}
+
+}  // namespace
+
+SearchNode StanceSearch::Run::make_node(int parent, const PostureRequest& request,
+                                        const PostureResult& solved, const Stance& stance,
+                                        const std::string& action,
+                                        std::optional<Contact> changed) const {
+  SearchNode node;
+  node.id = int(tree_.size());
+  node.parent = parent;
+  node.depth = parent >= 0 ? tree_[size_t(parent)].depth + 1 : 0;
+  for (const Contact& c : stance.contacts())
+    for (size_t i = 0; i < request.contacts.size(); ++i)
+      if (request.contacts[i].contact.same_surfaces(c))
+        node.placements.push_back(solved.placements[i]);
+  node.step = make_plan_step(request, solved, stance, action, changed);
+  return node;
+}
+
+double StanceSearch::Run::milestone_tolerance(int m) const {
+  const auto& given = problem_.milestone_tolerances;
+  return m < int(given.size()) && given[size_t(m)] > 0.0 ? given[size_t(m)]
+                                                          : options_.milestone_tolerance;
+}
+
+// The guide path ranks the nodes; the stance term only counts once the last milestone is the
+// target (before that it would reward goal contacts made too early, e.g. hands on the desk while
+// still walking to it).
+double StanceSearch::Run::cost(const SearchNode& node) const {
+  const double d = guide_.size() > 0 ? guide_.distance_to(node.q(), t_) : 0.0;
+  const bool final_approach = t_ + 1 >= guide_.size();
+  return d + (final_approach ? options_.stance_weight * stance_difference(node.stance(), goal_)
+                             : 0.0);
+}
+
+// The goal stance, at the goal's stated placements.
+bool StanceSearch::Run::is_goal(const SearchNode& node) const {
+  if (stance_difference(node.stance(), goal_) != 0) return false;
+  for (const StanceContact& g : problem_.goal_stance) {
+    if (!g.placement) continue;
+    const int i = node.stance().find(g.contact);
+    if (!same_placement(node.placements[size_t(i)], *g.placement, options_)) return false;
+  }
+  return true;
+}
+
+// Loop avoidance: the same stance at the same placements is already a node.
+bool StanceSearch::Run::already_in_tree(const Stance& stance,
+                                        const std::vector<Placement>& placements) const {
+  for (const SearchNode& n : tree_) {
+    if (!(n.stance() == stance)) continue;
+    bool same = true;
+    for (size_t i = 0; i < placements.size() && same; ++i)
+      same = same_placement(n.placements[i], placements[i], options_);
+    if (same) return true;
+  }
+  return false;
+}
+
+// Fewest contacts from the goal's stance, then the lowest cost.
+int StanceSearch::Run::closest() const {
+  int best = 0;
+  const auto key = [&](const SearchNode& x) {
+    return std::make_pair(stance_difference(x.stance(), goal_), cost(x));
+  };
+  for (const SearchNode& n : tree_)
+    if (key(n) < key(tree_[size_t(best)])) best = n.id;
+  return best;
+}
+
+// Advances t past every milestone the tree already reaches; publishes each.
+void StanceSearch::Run::advance_milestones() {
+  bool advanced = true;
+  while (advanced && t_ + 1 < guide_.size()) {
+    advanced = false;
+    for (const SearchNode& n : tree_)
+      if (guide_.distance_to(n.q(), t_) <= milestone_tolerance(t_)) {
+        ++t_;
+        advanced = true;
+        if (!search_.publish(
+                node_event(SearchEventKind::Milestone, n, t_, int(tree_.size()))))
+          return;
+        break;
+      }
+  }
+}
+
+// The best open node (ties: the older node, for determinism), taken off the open list.
+int StanceSearch::Run::pop_best_open() {
+  const auto best = std::min_element(open_.begin(), open_.end(), [&](int a, int b) {
+    const double ca = cost(tree_[size_t(a)]), cb = cost(tree_[size_t(b)]);
+    return ca < cb || (ca == cb && a < b);
+  });
+  const int n = *best;
+  open_.erase(best);
+  return n;
+}
+
+}  // namespace stanceplan

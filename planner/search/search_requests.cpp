@@ -1,0 +1,105 @@
+// Candidate generation and solver requests (search_run.h): the candidates of an expansion (Adj+
+// and Adj- of the node's stance, candidates.h) and the request of each attempt: case 1 (add a
+// contact, touched but unloaded, aimed by obj4) or case 2 (remove one: touched, unloaded), from
+// the node's configuration, then, on retries, from the milestone or perturbed configurations.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "planner/model/kinematics.h"
+#include "planner/search/search_event_builders.h"
+#include "planner/search/search_run.h"
+#include "planner/search/step_target.h"
+
+namespace stanceplan {
+namespace {
+
+// Another initial guess for backtracking: the node's configuration with the joints moved by a
+// deterministic pseudo-random amount (seeded by the node, the candidate and the attempt).
+Eigen::VectorXd perturbed(const System& system, const Eigen::VectorXd& q, int node, int attempt,
+                          size_t salt) {
+  std::mt19937 rng(static_cast<unsigned>(node * 7919 + attempt * 104729 + salt));
+  std::uniform_real_distribution<double> u(-0.15, 0.15);
+  Eigen::VectorXd out = q;
+  for (int e = 0; e < system.num_entities(); ++e) {
+    const Entity& entity = system.entity(e);
+    const Model& model = *entity.model;
+    for (int k = 0; k < model.num_dofs(); ++k) {
+      const Joint& joint = model.joints[model.dof_joints[k]];
+      double& v = out[system.offset(e) + entity.first_dof() + k];
+      v += u(rng);
+      if (joint.has_position_limits) v = std::clamp(v, joint.lower, joint.upper);
+    }
+  }
+  return out;
+}
+
+// Removing the contact that made a node gives back its parent's stance at the parent's
+// placements, which loop avoidance would reject after the solve: not worth a solver call.
+bool undoes_last_step(const SearchNode& node, const Candidate& c) {
+  return !c.add && node.step.action == "add" && node.step.changed &&
+         node.step.changed->same_surfaces(c.contact);
+}
+
+}  // namespace
+
+// A milestone may state which contacts are offered while it is the target (a phase of the task:
+// soles only while walking, thighs once sitting down).
+SearchOptions StanceSearch::Run::options_for_milestone(int m) const {
+  SearchOptions o = options_;
+  const auto& phases = problem_.milestone_contact_pairs;
+  if (m < int(phases.size()) && !phases[size_t(m)].empty()) o.contact_pairs = phases[size_t(m)];
+  return o;
+}
+
+std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int n) {
+  ++result_.nodes_expanded;
+  expanded_for_.resize(tree_.size(), -1);
+  expanded_for_[size_t(n)] = t_;
+  const SearchNode& node = tree_[size_t(n)];
+  if (!search_.publish(expansion_event(node, t_, int(tree_.size())))) return std::nullopt;
+  std::vector<Attempt> batch;
+  const auto data = system_kinematics(problem_.scene.system, node.q());
+  for (const Candidate& c :
+       enumerate_candidates(problem_.scene, data, node.stance(), goal_, options_for_milestone(t_)))
+    if (!undoes_last_step(node, c)) batch.push_back({n, c, 0});
+  return batch;
+}
+
+PostureRequest StanceSearch::Run::request_for(const Attempt& a, size_t index) const {
+  const Scene& scene = problem_.scene;
+  const SearchNode& node = tree_[size_t(a.node)];
+  PostureRequest r;
+  for (size_t k = 0; k < node.stance().contacts().size(); ++k)
+    r.contacts.push_back({node.stance().contacts()[k], true, node.placements[k], std::nullopt, {}});
+  const Eigen::VectorXd& q_ref = guide_.size() > 0 ? guide_.milestone(t_) : node.q();
+  if (a.candidate.add) {
+    ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt, {}};
+    // obj4 pulls the new contact towards its placement in the targeted milestone; a retry aims at
+    // a point nearer the current one (a shorter step); never across another contact.
+    const Placement now = measure_placement(scene, a.candidate.contact, node.q());
+    const Placement aim = measure_placement(scene, a.candidate.contact, q_ref);
+    const double share = std::pow(0.5, a.attempt);
+    added.placement_target =
+        step_target(scene, node.stance(), node.placements, a.candidate.contact, now, aim, share);
+    // Heading for the goal (the last milestone), a goal contact with a stated placement is first
+    // tried exactly there; a retry lets the solver choose.
+    for (const StanceContact& g : problem_.goal_stance)
+      if (g.placement && g.contact.same_surfaces(a.candidate.contact) && a.attempt == 0 &&
+          t_ + 1 >= guide_.size())
+        added.placement = g.placement;
+    r.contacts.push_back(added);
+  } else {
+    for (ContactTask& task : r.contacts)
+      if (task.contact.same_surfaces(a.candidate.contact)) task.loaded = false;
+  }
+  // Initial guesses: the node's configuration; on the first retry the targeted milestone (often
+  // in a better basin, e.g. sitting down); then perturbations of the node's configuration.
+  r.q_init = a.attempt == 0   ? node.q()
+             : a.attempt == 1 ? q_ref
+                              : perturbed(scene.system, node.q(), a.node, a.attempt, index);
+  r.q_ref = q_ref;
+  return r;
+}
+
+}  // namespace stanceplan

@@ -1,0 +1,199 @@
+// The main loop of a search run (search_run.h): Algorithm 1 of docs/METHOD.md section 3 with
+// budgets, backtracking and events.
+#include "planner/search/search_run.h"
+
+#include <algorithm>
+#include <thread>
+#include <utility>
+
+#include "planner/search/plan_path.h"
+#include "planner/search/search_event_builders.h"
+
+namespace stanceplan {
+namespace {
+
+SolverOptions cancellable(SolverOptions options, const std::atomic<bool>* cancel) {
+  options.cancel = cancel;
+  return options;
+}
+
+int thread_count(const SearchOptions& options) {
+  return options.threads > 0 ? options.threads
+                             : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Backtracking, last form (docs/METHOD.md section 3: further configurations for already-expanded
+// pairs): once the open and retry queues are empty, the nodes expanded while an earlier milestone
+// was the target are opened again, so that their case-1 candidates aim at the current one. E.g. a
+// foot placed short at the start of a side-step: standing on the other foot already reaches the
+// side-step's first milestone, the foot just placed cannot be stepped again from its own node
+// (that would undo its step), but its parent, expanded again, places it towards the next one.
+// Returns false when no node was expanded for an earlier milestone.
+bool reopen_stale(std::vector<int>& expanded_for, int t, std::vector<int>& open) {
+  bool any = false;
+  for (int n = 0; n < int(expanded_for.size()); ++n)
+    if (expanded_for[size_t(n)] >= 0 && expanded_for[size_t(n)] < t) {
+      expanded_for[size_t(n)] = -1;
+      open.push_back(n);
+      any = true;
+    }
+  return any;
+}
+
+}  // namespace
+
+StanceSearch::Run::Run(StanceSearch& search)
+    : search_(search),
+      problem_(search.problem_),
+      options_(search.options_),
+      start_(Clock::now()),
+      solver_(problem_.scene, cancellable(problem_.solver, &search.cancelled_)),
+      goal_(problem_.stance(problem_.goal_stance)),
+      guide_(problem_.scene.system, problem_.milestones, problem_.milestone_masks),
+      threads_(thread_count(options_)),
+      pool_(solver_, threads_),
+      tree_(result_.tree) {}
+
+SearchResult StanceSearch::Run::run() {
+  if (auto end = realise_root()) return std::move(*end);
+  while (true) {
+    if (auto end = over_budget()) return std::move(*end);
+    std::vector<Attempt> batch;
+    if (auto end = next_batch(batch)) return std::move(*end);
+    if (batch.empty()) continue;  // nodes were reopened: choose again
+    // Solve the batch, in parallel; results are used in batch order (deterministic).
+    std::vector<PostureRequest> requests(batch.size());
+    for (size_t i = 0; i < batch.size(); ++i) requests[i] = request_for(batch[i], i);
+    const std::vector<PostureResult> results = pool_.solve_all(requests, &search_.cancelled_);
+    if (auto end = take_results(batch, requests, results)) return std::move(*end);
+  }
+}
+
+// The root: sigma_init realised with every contact loaded.
+std::optional<SearchResult> StanceSearch::Run::realise_root() {
+  const PostureRequest request =
+      problem_.loaded_request(problem_.initial_stance, problem_.initial_configuration);
+  const PostureResult solved = solver_.solve(request);
+  ++result_.solver_calls;
+  result_.solver_time_s += solved.time_ms / 1000.0;
+  if (solved.status != PostureStatus::Solved)
+    return finish(PlanStatus::InitialInfeasible,
+                  "the initial stance has no posture: " + solved.message);
+  tree_.push_back(make_node(-1, request, solved, problem_.stance(problem_.initial_stance),
+                            "initial", std::nullopt));
+  if (!search_.publish(root_event(tree_[0], solved)))
+    return give_up(PlanStatus::Cancelled, "cancelled");
+  advance_milestones();
+  if (is_goal(tree_[0])) return found(0);
+  open_ = {0};
+  return std::nullopt;
+}
+
+std::optional<SearchResult> StanceSearch::Run::over_budget() {
+  if (search_.stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
+  if (elapsed() > options_.time_limit_s)
+    return give_up(PlanStatus::TimeBudget,
+                   "no plan within " + std::to_string(options_.time_limit_s) + " s");
+  if (result_.nodes_expanded >= options_.max_nodes)
+    return give_up(PlanStatus::NodeBudget, "no plan within " + std::to_string(options_.max_nodes) +
+                                               " expanded nodes");
+  return std::nullopt;
+}
+
+// Urgent retries first, then the best open node, then (backtracking, docs/METHOD.md section 3)
+// the other retries from other initial guesses, then nodes expanded for an earlier milestone.
+std::optional<SearchResult> StanceSearch::Run::next_batch(std::vector<Attempt>& batch) {
+  if (!urgent_.empty()) {
+    batch.assign(urgent_.begin(), urgent_.end());
+    urgent_.clear();
+  } else if (!open_.empty()) {
+    std::optional<std::vector<Attempt>> expanded = expand(pop_best_open());
+    if (!expanded) return give_up(PlanStatus::Cancelled, "cancelled");
+    batch = std::move(*expanded);
+  } else if (!retries_.empty()) {
+    batch.assign(retries_.begin(), retries_.end());
+    retries_.clear();
+  } else if (!reopen_stale(expanded_for_, t_, open_)) {
+    return give_up(PlanStatus::Exhausted, "every reachable stance was tried");
+  }
+  return std::nullopt;
+}
+
+std::optional<SearchResult> StanceSearch::Run::take_results(
+    const std::vector<Attempt>& batch, const std::vector<PostureRequest>& requests,
+    const std::vector<PostureResult>& results) {
+  for (size_t i = 0; i < batch.size(); ++i) {
+    if (search_.stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
+    const Attempt& a = batch[i];
+    const PostureResult& r = results[i];
+    ++result_.solver_calls;
+    result_.solver_time_s += r.time_ms / 1000.0;
+    const Stance& from = tree_[size_t(a.node)].stance();
+    const Stance next = a.candidate.add ? from.with(a.candidate.contact)
+                                        : from.without(from.find(a.candidate.contact));
+    SearchEvent e =
+        candidate_event(a.node, next, a.candidate.add, a.candidate.contact, requests[i], r);
+    if (r.status == PostureStatus::Solved) {
+      SearchNode child = make_node(a.node, requests[i], r, next,
+                                   a.candidate.add ? "add" : "remove", a.candidate.contact);
+      child.milestone = t_;
+      if (already_in_tree(child.stance(), child.placements)) {
+        e.message = "already in the tree";
+      } else {
+        e.accepted = true;
+        e.node = child.id;
+        tree_.push_back(std::move(child));
+        open_.push_back(e.node);
+      }
+    } else if (a.attempt < options_.max_retries) {
+      const bool towards_goal = a.candidate.add && goal_.find(a.candidate.contact) >= 0;
+      (towards_goal ? urgent_ : retries_).push_back({a.node, a.candidate, a.attempt + 1});
+    }
+    e.milestone = t_;
+    e.nodes = int(tree_.size());
+    if (!search_.publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
+    if (e.accepted) {
+      if (is_goal(tree_[size_t(e.node)])) return found(e.node);
+      advance_milestones();
+    }
+  }
+  return std::nullopt;
+}
+
+SearchResult StanceSearch::Run::finish(PlanStatus status, std::string message) {
+  result_.status = status;
+  result_.message = std::move(message);
+  result_.wall_time_s = elapsed();
+  result_.plan.stats = {result_.nodes_expanded, result_.solver_calls, result_.wall_time_s,
+                        threads_};
+  if (status != PlanStatus::Found && search_.observer_) {
+    SearchEvent failure = failure_event(std::string(to_string(status)) + ": " + result_.message,
+                                        tree_, result_.closest_node);
+    failure.number = search_.next_event_++;
+    search_.observer_(failure);  // always delivered, even when cancelled
+  }
+  return std::move(result_);
+}
+
+// Every failure after the root: report the node closest to the goal (computed once, here).
+SearchResult StanceSearch::Run::give_up(PlanStatus status, std::string message) {
+  result_.closest_node = closest();
+  result_.milestone = t_;
+  return finish(status, std::move(message));
+}
+
+SearchResult StanceSearch::Run::found(int goal_node) {
+  result_.plan.steps = plan_to_node(tree_, goal_node).steps;
+  result_.closest_node = goal_node;
+  result_.milestone = t_;
+  search_.publish(node_event(SearchEventKind::PlanFound, tree_[size_t(goal_node)], t_,
+                             int(tree_.size())));
+  return finish(PlanStatus::Found,
+                "plan of " + std::to_string(result_.plan.steps.size()) + " steps");
+}
+
+double StanceSearch::Run::elapsed() const {
+  return std::chrono::duration<double>(Clock::now() - start_).count();
+}
+
+}  // namespace stanceplan

@@ -1,0 +1,95 @@
+#pragma once
+// One run of StanceSearch (Algorithm 1, docs/METHOD.md section 3), in named parts. Internal to
+// planner/search/:
+//   search_run.cpp       the main loop: budgets, which batch comes next, solving a batch in the
+//                        solver pool and taking its results in batch order;
+//   search_frontier.cpp  the tree and its frontier: node costs (distance to the targeted
+//                        milestone), the goal test, loop avoidance, the closest node, milestones;
+//   search_requests.cpp  candidate generation at an expansion and the solver request of each
+//                        attempt (case 1 / case 2, step targets, initial guesses for retries);
+//   search_event_builders.h  the events it publishes.
+#include <chrono>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planner/search/candidates.h"
+#include "planner/search/guide_path.h"
+#include "planner/search/stance_search.h"
+#include "planner/solver/posture_solver.h"
+#include "planner/solver/solver_pool.h"
+
+namespace stanceplan {
+
+// One candidate solve: a (node, candidate) pair and which attempt it is (0, then backtracking).
+struct StanceSearch::Attempt {
+  int node = -1;
+  Candidate candidate;
+  int attempt = 0;
+};
+
+class StanceSearch::Run {
+ public:
+  explicit Run(StanceSearch& search);
+  SearchResult run();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  // --- the main loop (search_run.cpp)
+  std::optional<SearchResult> realise_root();
+  std::optional<SearchResult> over_budget();
+  // The next batch of attempts, or the search's end when nothing is left to try.
+  std::optional<SearchResult> next_batch(std::vector<Attempt>& batch);
+  // Takes solved batch results in batch order: new nodes, retries, events; the search's end when
+  // the goal is reached or the search is cancelled.
+  std::optional<SearchResult> take_results(const std::vector<Attempt>& batch,
+                                           const std::vector<PostureRequest>& requests,
+                                           const std::vector<PostureResult>& results);
+  SearchResult finish(PlanStatus status, std::string message);
+  SearchResult give_up(PlanStatus status, std::string message);
+  SearchResult found(int goal_node);
+  double elapsed() const;
+
+  // --- the tree and its frontier (search_frontier.cpp)
+  SearchNode make_node(int parent, const PostureRequest& request, const PostureResult& solved,
+                       const Stance& stance, const std::string& action,
+                       std::optional<Contact> changed) const;
+  double milestone_tolerance(int m) const;
+  double cost(const SearchNode& node) const;
+  bool is_goal(const SearchNode& node) const;
+  bool already_in_tree(const Stance& stance, const std::vector<Placement>& placements) const;
+  int closest() const;
+  void advance_milestones();
+  int pop_best_open();
+
+  // --- candidates and requests (search_requests.cpp)
+  SearchOptions options_for_milestone(int m) const;
+  // Publishes the expansion of node n and returns its candidates as first attempts; nullopt when
+  // the search was cancelled at the event.
+  std::optional<std::vector<Attempt>> expand(int n);
+  PostureRequest request_for(const Attempt& attempt, size_t index) const;
+
+  StanceSearch& search_;
+  const Problem& problem_;
+  const SearchOptions& options_;
+  const Clock::time_point start_;
+  const PostureSolver solver_;
+  const Stance goal_;
+  const GuidePath guide_;
+  const int threads_;
+  SolverPool pool_;  // worker processes (Ipopt is not thread-safe): made before any solve
+  SearchResult result_;
+  std::vector<SearchNode>& tree_;
+  int t_ = 0;               // the targeted milestone
+  std::vector<int> open_;   // nodes not yet expanded
+  // Backtracking queues: failed candidates that would add a goal contact are retried at once from
+  // other initial guesses; the others when the open queue is empty.
+  std::deque<Attempt> urgent_, retries_;
+  // The milestone each node was last expanded for (-1: not yet), for the last form of
+  // backtracking.
+  std::vector<int> expanded_for_;
+};
+
+}  // namespace stanceplan

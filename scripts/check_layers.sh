@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The one-way layers of docs/ARCHITECTURE.md, checked over every #include of the source tree.
+# Exit 1, naming each include that points the wrong way:
+#  - planner/ never includes render/, app/, GL, GLFW or ImGui; render/ never includes app/, GLFW
+#    or ImGui;
+#  - inside planner/, a folder includes only its own layer and those below it:
+#      util < model < contact, collision < scene < solver < plan < search < io < certify
+#    (so the search never includes io/, the file readers and writers).
+# KNOWN lists the includes that break a rule today and are still to be moved; it may only shrink.
+# Usage: check_layers.sh [ROOT]  (ROOT: the tree to check, default this repository)
+set -euo pipefail
+root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
+cd "$root"
+
+rank() {
+  case "$1" in
+    util) echo 0 ;; model) echo 1 ;; contact | collision) echo 2 ;; scene) echo 3 ;;
+    solver) echo 4 ;; plan) echo 5 ;; search | guide | motion) echo 6 ;; io) echo 7 ;;
+    certify) echo 8 ;; *) echo 99 ;;
+  esac
+}
+
+# "file:included path" entries; none today.
+KNOWN=()
+
+violations=()
+report() {  # file, included path, why
+  local key="$1:$2"
+  for k in "${KNOWN[@]}"; do [[ "$k" == "$key" ]] && return 0; done
+  violations+=("$1 includes $2: $3")
+}
+
+while IFS= read -r line; do
+  file=${line%%:*}
+  included=$(sed -E 's/^[^:]+:[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]([^>"]+)[>"].*/\1/' <<<"$line")
+  case "$file" in
+    planner/*)
+      if [[ "$included" =~ ^(render|app)/ || "$included" =~ ^(GL|GLFW)/ || "$included" =~ imgui ]]; then
+        report "$file" "$included" "planner/ never includes render/, app/, GL, GLFW or ImGui"
+      elif [[ "$included" =~ ^planner/([a-z_]+)/ ]]; then
+        to=${BASH_REMATCH[1]}
+        from=$(cut -d/ -f2 <<<"$file")
+        if [[ "$to" != "$from" && $(rank "$to") -ge $(rank "$from") ]]; then
+          report "$file" "$included" "planner/$from/ may include only the layers below it"
+        fi
+      fi
+      ;;
+    render/*)
+      if [[ "$included" =~ ^app/ || "$included" =~ ^GLFW/ || "$included" =~ imgui ]]; then
+        report "$file" "$included" "render/ never includes app/, GLFW or ImGui"
+      fi
+      ;;
+  esac
+done < <(grep -rnE --include='*.h' --include='*.cpp' '^[[:space:]]*#[[:space:]]*include' planner render |
+         sed -E 's/^([^:]+):[0-9]+:/\1:/')
+
+# A KNOWN entry that no longer occurs is stale: drop it from the list.
+for k in "${KNOWN[@]}"; do
+  file=${k%%:*}
+  grep -qE "#[[:space:]]*include[[:space:]]*\"${k#*:}\"" "$file" 2>/dev/null ||
+    violations+=("scripts/check_layers.sh: KNOWN lists $k, which no longer occurs: remove it")
+done
+
+if ((${#violations[@]})); then
+  printf 'check_layers: %s\n' "${violations[@]}" >&2
+  exit 1
+fi
+echo "check_layers: every include of planner/ and render/ points down the layers"
