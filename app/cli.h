@@ -1,11 +1,12 @@
 #pragma once
 // The `stanceplan` command line, callable in-process (tests drive it without spawning).
-// Exit codes: 0 success, 1 bad input or usage, 2 no plan found / certification failed.
+// Exit codes (app/exit_codes.h): 0 success, 1 bad input or usage, 2 no plan found / no posture /
+// certification failed.
 #include <iosfwd>
 
-namespace stanceplan::app {
+#include "app/exit_codes.h"
 
-enum ExitCode { kExitSuccess = 0, kExitBadInput = 1, kExitFailed = 2 };
+namespace stanceplan::app {
 
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
 

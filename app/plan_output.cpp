@@ -4,7 +4,7 @@
 #include <ostream>
 #include <sstream>
 
-#include "app/cli.h"
+#include "app/exit_codes.h"
 #include "planner/io/plan_writer.h"
 
 namespace stanceplan::app {

@@ -3,7 +3,7 @@
 #include <iomanip>
 #include <ostream>
 
-#include "app/cli.h"
+#include "app/exit_codes.h"
 #include "app/plan_output.h"
 #include "planner/plan/plan_step.h"
 #include "planner/io/plan_writer.h"

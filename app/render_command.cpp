@@ -9,17 +9,13 @@
 #include <memory>
 #include <ostream>
 
-#include "planner/io/plan_reader.h"
+#include "app/pipeline.h"
 #include "planner/util/input_error.h"
-#include "render/figures/sequence.h"
-#include "render/image/gif_writer.h"
-#include "render/image/png_io.h"
 
 namespace stanceplan::app {
 namespace {
 
 constexpr int kMaxImageSide = 8192;
-constexpr int kGifMaxWidth = 640;  // GIFs are for slides and READMEs: small files
 
 // "1280x720" -> (1280, 720); false on anything else.
 bool parse_size(const std::string& text, int* width, int* height) {
@@ -33,8 +29,9 @@ bool parse_size(const std::string& text, int* width, int* height) {
   return true;
 }
 
-render::SequenceOptions sequence_options(const RenderOptions& options, const LoadedPlan& plan) {
-  render::SequenceOptions out;
+render::SequenceOptions sequence_options(const RenderOptions& options,
+                                         const render::PlanView& plan) {
+  render::SequenceOptions out = figure_options(plan);
   out.width = options.width;
   out.height = options.height;
   const auto view = render::parse_view(options.view);
@@ -44,7 +41,6 @@ render::SequenceOptions sequence_options(const RenderOptions& options, const Loa
   out.view = *view;
   out.style.collision_geometry = options.collision_geometry;
   out.style.friction_cones = options.friction_cones;
-  out.style.friction = plan.friction;
   if (!options.eye.empty() || !options.target.empty()) {
     if (options.eye.size() != 3 || options.target.size() != 3)
       throw InputError("--eye and --target: both are needed, with 3 coordinates each");
@@ -58,41 +54,6 @@ render::SequenceOptions sequence_options(const RenderOptions& options, const Loa
     out.camera = camera;
   }
   return out;
-}
-
-void print_warnings(const std::vector<std::string>& warnings, std::ostream& err) {
-  for (const std::string& w : warnings) err << "stanceplan: warning: " << w << "\n";
-}
-
-void write_steps(const LoadedPlan& plan, const render::SequenceOptions& options,
-                 const std::string& dir, const std::shared_ptr<render::MeshLibrary>& meshes,
-                 std::ostream& out, std::ostream& err) {
-  std::filesystem::create_directories(dir);
-  render::SequenceRenderer sequence(plan, options, meshes);
-  for (int i = 0; i < sequence.num_steps(); ++i) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "step_%03d.png", i);
-    render::write_png((std::filesystem::path(dir) / name).string(), sequence.render_step(i));
-    print_warnings(sequence.take_warnings(), err);
-  }
-  out << "render: " << sequence.num_steps() << (sequence.num_steps() == 1 ? " image" : " images")
-      << " in " << dir << "\n";
-}
-
-void write_gif(const LoadedPlan& plan, render::SequenceOptions options, const std::string& path,
-               const std::shared_ptr<render::MeshLibrary>& meshes, std::ostream& out,
-               std::ostream& err) {
-  if (options.width > kGifMaxWidth) {
-    options.height = std::max(16, options.height * kGifMaxWidth / options.width);
-    options.width = kGifMaxWidth;
-  }
-  options.style.legend = false;  // too small to read in a GIF; the colours speak for themselves
-  render::SequenceRenderer sequence(plan, options, meshes);
-  std::vector<render::Image> frames;
-  for (int i = 0; i < sequence.num_steps(); ++i) frames.push_back(sequence.render_step(i));
-  print_warnings(sequence.take_warnings(), err);
-  render::write_gif(path, frames);
-  out << "render: animated GIF of " << frames.size() << " frames in " << path << "\n";
 }
 
 }  // namespace
@@ -144,20 +105,9 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
   const LoadedPlan plan = read_plan(options.plan, read_options);
   if (plan.plan.steps.empty())
     throw InputError(options.plan + ": steps: the plan has no step to render");
-  const render::SequenceOptions sequence = sequence_options(options, plan);
-  // One library for every image set: each mesh file is read once, and each warning printed once.
-  const auto meshes = std::make_shared<render::MeshLibrary>();
-  if (!options.out_dir.empty()) write_steps(plan, sequence, options.out_dir, meshes, out, err);
-  if (!options.strip.empty()) {
-    std::vector<std::string> warnings;
-    const render::Image strip =
-        render::render_strip(plan, render::StripOptions{}, sequence, meshes, &warnings);
-    print_warnings(warnings, err);
-    render::write_png(options.strip, strip);
-    out << "render: strip of " << plan.plan.steps.size()
-        << (plan.plan.steps.size() == 1 ? " step" : " steps") << " in " << options.strip << "\n";
-  }
-  if (!options.gif.empty()) write_gif(plan, sequence, options.gif, meshes, out, err);
+  const render::PlanView view = plan_view(plan);
+  render_figures(view, sequence_options(options, view), {options.out_dir, options.strip, options.gif},
+                 out, err);
   return 0;
 }
 

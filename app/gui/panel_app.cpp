@@ -10,7 +10,7 @@
 #include <ostream>
 #include <sstream>
 
-#include "app/cli.h"
+#include "app/exit_codes.h"
 #include "app/gui/controls_section.h"
 #include "app/gui/gui_window.h"
 #include "app/gui/node_section.h"
@@ -27,6 +27,7 @@
 #include "app/gui/view_texture.h"
 #include "app/live/event_record.h"
 #include "app/live/plan_session.h"
+#include "app/pipeline.h"
 #include "app/plan_output.h"
 #include "planner/util/fork_gate.h"
 #include "render/figures/step_caption.h"
@@ -136,7 +137,7 @@ class PanelApp {
   SessionMirror mirror_;
   PanelState state_;
   OrbitCamera camera_, framed_;
-  std::shared_ptr<const LoadedPlan> plan_;
+  std::shared_ptr<const Plan> plan_;  // the plan found, once the search has found it
   Clock::time_point search_start_;
   double search_elapsed_s_ = 0.0;
   bool finish_handled_ = false;
@@ -215,7 +216,7 @@ void PanelApp::sync(double dt_s) {
     options_.select_node.reset();
   }
   if (!plan_) return;
-  advance_timeline(state_, static_cast<int>(plan_->plan.steps.size()), dt_s);
+  advance_timeline(state_, static_cast<int>(plan_->steps.size()), dt_s);
   // A node selected on the plan moves the timeline to its step.
   if (state_.source == ViewSource::Node) {
     const std::vector<int> path = mirror_.tree().plan_path();
@@ -228,7 +229,7 @@ void PanelApp::on_search_finished(std::ostream& out, std::ostream& err) {
   const SearchResult& result = *mirror_.result();
   search_elapsed_s_ = result.wall_time_s;
   if (result.status != PlanStatus::Found || result.plan.steps.empty()) return;
-  plan_ = std::make_shared<const LoadedPlan>(loaded_plan(scenario_, result.plan));
+  plan_ = std::make_shared<const Plan>(result.plan);
   state_.plan_step = static_cast<int>(result.plan.steps.size()) - 1;
   if (state_.source == ViewSource::Latest) state_.source = ViewSource::PlanStep;
   try {
@@ -301,7 +302,7 @@ ViewRequest PanelApp::view_request(long shown, const Rect& area) const {
   r.height = std::max(16, static_cast<int>(area.h * scale.y));
   const int milestones = static_cast<int>(scenario_.milestones.size());
   r.caption = state_.source == ViewSource::PlanStep && plan_
-                  ? render::step_caption(*plan_, state_.plan_step)
+                  ? render::step_caption(app::plan_view(scenario_, *plan_), state_.plan_step)
                   : event_caption(scenario_.scene, e, milestones);
   return r;
 }
@@ -343,7 +344,7 @@ void PanelApp::carry_out_requests(long shown, const Rect& area) {
   state_.export_view = false;
   if (state_.export_strip && plan_) {
     std::filesystem::create_directories(dir);
-    view_.post(export_strip_job(plan_, meshes_, (dir / "strip.png").string()));
+    view_.post(export_strip_job(scenario_, plan_, meshes_, (dir / "strip.png").string()));
     state_.messages.push_back("exporting " + (dir / "strip.png").string() + "\u2026");
   }
   state_.export_strip = false;

@@ -2,20 +2,11 @@
 
 #include <utility>
 
+#include "app/pipeline.h"
 #include "render/figures/sequence.h"
 #include "render/image/png_io.h"
 
 namespace stanceplan::gui {
-
-LoadedPlan loaded_plan(const Scenario& scenario, const Plan& plan) {
-  LoadedPlan loaded;
-  loaded.scenario = scenario.file;
-  loaded.spec = scenario.spec;
-  loaded.scene = scenario.scene;
-  loaded.friction = scenario.solver.friction;
-  loaded.plan = plan;
-  return loaded;
-}
 
 ViewRenderer::Job export_view_job(const Scene& scene, ViewRequest view,
                                   std::shared_ptr<render::MeshLibrary> meshes, std::string path) {
@@ -30,13 +21,13 @@ ViewRenderer::Job export_view_job(const Scene& scene, ViewRequest view,
   };
 }
 
-ViewRenderer::Job export_strip_job(std::shared_ptr<const LoadedPlan> plan,
+ViewRenderer::Job export_strip_job(const Scenario& scenario, std::shared_ptr<const Plan> plan,
                                    std::shared_ptr<render::MeshLibrary> meshes, std::string path) {
-  return [plan = std::move(plan), meshes = std::move(meshes),
+  return [&scenario, plan = std::move(plan), meshes = std::move(meshes),
           path = std::move(path)](render::Renderer&) {
-    render::SequenceOptions options;
-    options.style.friction = plan->friction;
-    render::write_png(path, render::render_strip(*plan, render::StripOptions{}, options, meshes));
+    const render::PlanView view = app::plan_view(scenario, *plan);
+    render::write_png(path, render::render_strip(view, render::StripOptions{},
+                                                 app::figure_options(view), meshes));
     return "saved " + path;
   };
 }

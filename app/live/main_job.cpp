@@ -4,13 +4,11 @@
 #include <filesystem>
 #include <ostream>
 
-#include "app/certify_command.h"
-#include "app/cli.h"
+#include "app/exit_codes.h"
 #include "app/live/data_dir.h"
 #include "app/live/panel_hook.h"
 #include "app/live/snapshot_writer.h"
-#include "app/plan_command.h"
-#include "app/render_command.h"
+#include "app/pipeline.h"
 
 namespace stanceplan::app {
 namespace {
@@ -21,7 +19,8 @@ std::string in_dir(const std::string& dir, const std::string& name) {
   return (fs::path(dir) / name).string();
 }
 
-// Plan with snapshots, certify, then the animation (plan_command draws the steps and the strip).
+// Plan with snapshots (the steps and the strip are drawn then), certify the file, then the
+// animation.
 int run_headless(const std::string& scenario, const MainJobOptions& options, std::ostream& out,
                  std::ostream& err) {
   const std::string& dir = options.out_dir;
@@ -33,16 +32,18 @@ int run_headless(const std::string& scenario, const MainJobOptions& options, std
   plan.threads = options.threads;
   plan.snapshots = dir;
   plan.snapshots_rejected = options.snapshots_rejected;
-  if (const int code = run_plan(plan, out, err); code != kExitSuccess) {
+  const Planned planned = plan_scenario(plan, out, err);
+  if (!planned.written()) {
     err << "stanceplan: the search snapshots and " << SnapshotWriter::kIndexFile << " are in "
         << dir << "\n";
-    return code;
+    return planned.code;
   }
-  if (const int code = run_certify(plan.out, out, err); code != kExitSuccess) return code;
-  RenderOptions gif;
-  gif.plan = plan.out;
+  // The file, read back by the independent checker; the animation from the plan in memory.
+  if (const int code = certify_file(plan.out, out, err); code != kExitSuccess) return code;
+  FigureFiles gif;
   gif.gif = in_dir(dir, "sequence.gif");
-  run_render(gif, out, err);
+  const render::PlanView view = plan_view(*planned.scenario, planned.result->plan);
+  render_figures(view, figure_options(view), gif, out, err);
   out << "main job done, in " << dir << ":\n"
       << "  plan            " << plan.out << " (certified)\n"
       << "  search events   " << in_dir(dir, SnapshotWriter::kIndexFile)
@@ -64,15 +65,10 @@ bool display_available() {
 int run_main_job(const MainJobOptions& options, std::ostream& out, std::ostream& err) {
   const std::string scenario =
       options.scenario.empty() ? default_scenario_path() : options.scenario;
-  if (!options.headless && display_available()) {
-#ifdef STANCEPLAN_HAVE_PANEL
+  if (!options.headless && display_available())
     return run_panel({scenario, options.out_dir, options.threads, options.snapshots_rejected,
                       options.exit_after_frames, options.screenshot},
                      out, err);
-#else
-    err << "stanceplan: the panel is not built yet; running headless\n";
-#endif
-  }
   return run_headless(scenario, options, out, err);
 }
 

@@ -1,9 +1,7 @@
 #pragma once
-// The hook between the main job and the interactive panel (app/gui/, GLFW + Dear ImGui). The
-// main job calls run_panel() when a display exists and --headless is not given. app/gui/ defines
-// it and, when its sources are part of the build, compiles stanceplan_app with
-// STANCEPLAN_HAVE_PANEL=1; without that definition the main job says the panel is not built and
-// runs headless.
+// The hook between the main job and the interactive panel (app/gui/, GLFW + Dear ImGui): the
+// main job calls run_panel() when a display exists and --headless is not given; app/gui/ defines
+// it. (app/live/ keeps no window header: the panel is always built.)
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -20,7 +18,7 @@ struct PanelRequest {
 };
 
 // Opens the window, runs a PlanSession on `request.scenario` under the panel's control and
-// returns the exit code (ExitCode in app/cli.h) when the window closes.
+// returns the exit code (app/exit_codes.h) when the window closes.
 int run_panel(const PanelRequest& request, std::ostream& out, std::ostream& err);
 
 }  // namespace stanceplan::app

@@ -14,7 +14,7 @@ namespace {
 
 // Size of what moves: the diagonal of the box of the link origins of every robot and object over
 // the plan's steps (0 when there is none).
-double subject_size(const LoadedPlan& plan) {
+double subject_size(const PlanView& plan) {
   Eigen::AlignedBox3d box;
   for (const PlanStep& step : plan.plan.steps) {
     const SystemPose pose(plan.scene.system, step.q);
@@ -38,14 +38,14 @@ RenderStyle scaled_to_subject(RenderStyle style, double size) {
   return style;
 }
 
-RenderStyle with_plan_scale(RenderStyle style, const LoadedPlan& plan) {
+RenderStyle with_plan_scale(RenderStyle style, const PlanView& plan) {
   style = scaled_to_subject(style, subject_size(plan));
   if (style.force_scale <= 0.0) style.force_scale = plan_force_scale(plan, style.force_max_length);
   style.friction = plan.friction;
   return style;
 }
 
-Camera sequence_camera(const LoadedPlan& plan, Renderer& renderer, const SequenceOptions& options) {
+Camera sequence_camera(const PlanView& plan, Renderer& renderer, const SequenceOptions& options) {
   if (options.camera) return *options.camera;
   const double aspect = static_cast<double>(renderer.width()) / renderer.height();
   return frame_box(plan_bounds(plan, renderer.style(), renderer.meshes()), options.view, aspect,
@@ -69,7 +69,7 @@ double projected_aspect(const Eigen::AlignedBox3d& box, View view) {
 
 }  // namespace
 
-Eigen::AlignedBox3d plan_bounds(const LoadedPlan& plan, const RenderStyle& style,
+Eigen::AlignedBox3d plan_bounds(const PlanView& plan, const RenderStyle& style,
                                 MeshLibrary& meshes) {
   Eigen::AlignedBox3d box;
   for (const PlanStep& step : plan.plan.steps)
@@ -83,14 +83,14 @@ Eigen::AlignedBox3d plan_bounds(const LoadedPlan& plan, const RenderStyle& style
   return box;
 }
 
-double plan_force_scale(const LoadedPlan& plan, double max_length) {
+double plan_force_scale(const PlanView& plan, double max_length) {
   double largest = 0.0;
   for (const PlanStep& step : plan.plan.steps)
     for (const VertexForce& f : step.forces) largest = std::max(largest, f.force_W.norm());
   return largest > 0.0 ? max_length / largest : 0.0;
 }
 
-SequenceRenderer::SequenceRenderer(const LoadedPlan& plan, const SequenceOptions& options,
+SequenceRenderer::SequenceRenderer(const PlanView& plan, const SequenceOptions& options,
                                    std::shared_ptr<MeshLibrary> meshes)
     : plan_(plan),
       renderer_(options.width, options.height, with_plan_scale(options.style, plan),
@@ -168,7 +168,7 @@ std::vector<int> first_contact_steps(const Plan& plan) {
   return steps;
 }
 
-Image render_strip(const LoadedPlan& plan, StripOptions strip, const SequenceOptions& options,
+Image render_strip(const PlanView& plan, StripOptions strip, const SequenceOptions& options,
                    std::shared_ptr<MeshLibrary> meshes, std::vector<std::string>* warnings) {
   if (!meshes) meshes = std::make_shared<MeshLibrary>();
   int max_columns = strip.max_columns;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "planner/io/plan_reader.h"
+#include "render/figures/plan_view.h"
 #include "render/image/image.h"
 #include "render/render_style.h"
 #include "render/renderer.h"
@@ -29,8 +29,8 @@ class SequenceRenderer {
  public:
   // Computes the shared framing (the robots, objects and contacts of every step) and the shared
   // force scale (the largest vertex force of the plan is drawn style.force_max_length long).
-  // Keeps a reference to `plan`, which must outlive it.
-  SequenceRenderer(const LoadedPlan& plan, const SequenceOptions& options,
+  // Keeps a copy of the view: the scene and the plan it names must outlive this.
+  SequenceRenderer(const PlanView& plan, const SequenceOptions& options,
                    std::shared_ptr<MeshLibrary> meshes = nullptr);
 
   int num_steps() const { return static_cast<int>(plan_.plan.steps.size()); }
@@ -40,16 +40,16 @@ class SequenceRenderer {
   std::vector<std::string> take_warnings() { return renderer_.take_warnings(); }
 
  private:
-  const LoadedPlan& plan_;
+  PlanView plan_;
   Renderer renderer_;
   Camera camera_;
 };
 
 // Framing box of every step of a plan (robots, objects, contact surfaces).
-Eigen::AlignedBox3d plan_bounds(const LoadedPlan& plan, const RenderStyle& style,
+Eigen::AlignedBox3d plan_bounds(const PlanView& plan, const RenderStyle& style,
                                 MeshLibrary& meshes);
 // Metres per newton drawing the plan's largest vertex force `max_length` long (0 if no force).
-double plan_force_scale(const LoadedPlan& plan, double max_length);
+double plan_force_scale(const PlanView& plan, double max_length);
 
 struct StripOptions {
   int panel_width = 0;  // 0: from the shape of the plan's framing box (portrait to landscape)
@@ -71,7 +71,7 @@ std::vector<int> first_contact_steps(const Plan& plan);
 
 // The figure: a title, the key postures in rows (same framing), each with its step label, and a
 // legend. `options.width/height` are ignored (panels have their own size).
-Image render_strip(const LoadedPlan& plan, StripOptions strip, const SequenceOptions& options,
+Image render_strip(const PlanView& plan, StripOptions strip, const SequenceOptions& options,
                    std::shared_ptr<MeshLibrary> meshes = nullptr,
                    std::vector<std::string>* warnings = nullptr);
 

@@ -1,7 +1,6 @@
 #include "render/figures/step_caption.h"
 
 #include <cctype>
-#include <filesystem>
 #include <map>
 #include <vector>
 
@@ -50,7 +49,7 @@ std::string step_action(const Scene& scene, const PlanStep& step) {
   return step.action + " " + s1 + " / " + s2;
 }
 
-std::string step_caption(const LoadedPlan& plan, int step) {
+std::string step_caption(const PlanView& plan, int step) {
   // Steps are numbered as in the plan file (0 = the initial stance); "of N" counts transitions.
   const PlanStep& s = plan.plan.steps.at(step);
   const int last = static_cast<int>(plan.plan.steps.size()) - 1;
@@ -70,9 +69,6 @@ std::string step_caption(const LoadedPlan& plan, int step) {
   return caption;
 }
 
-std::string plan_title(const LoadedPlan& plan) {
-  const std::string source = plan.scenario.empty() ? plan.file : plan.scenario;
-  return std::filesystem::path(source).stem().string();
-}
+std::string plan_title(const PlanView& plan) { return plan.name; }
 
 }  // namespace stanceplan::render

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "planner/contact/contact.h"
-#include "planner/io/plan_reader.h"
+#include "render/figures/plan_view.h"
 
 namespace stanceplan::render {
 
@@ -14,8 +14,8 @@ std::string stance_summary(const Scene& scene, const Stance& stance);
 std::string step_action(const Scene& scene, const PlanStep& step);
 // Two lines: "Step 3 of 6 · add r_hand on table" (steps numbered as in the plan, 0 = initial)
 // and "stance: ...". A one-step plan says "Initial stance".
-std::string step_caption(const LoadedPlan& plan, int step);
-// The plan's name for titles: the scenario file's stem, else the plan file's stem.
-std::string plan_title(const LoadedPlan& plan);
+std::string step_caption(const PlanView& plan, int step);
+// The plan's name for titles (PlanView::name).
+std::string plan_title(const PlanView& plan);
 
 }  // namespace stanceplan::render

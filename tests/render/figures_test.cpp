@@ -4,6 +4,7 @@
 
 #include <map>
 
+#include "app/pipeline.h"
 #include "planner/io/scenario.h"
 #include "render/figures/sequence.h"
 #include "render/figures/step_caption.h"
@@ -337,10 +338,11 @@ TEST(Text, CaptionFontIsInstalledAndDrawsInk) {
 TEST(Figures, StepCaptionsNameStepActionAndStance) {
   const std::string dir = test::fresh_dir("captions");
   const LoadedPlan plan = read_plan(test::write_humanoid_plan(dir, 3), {.build_collision = false});
-  EXPECT_EQ(step_caption(plan, 0),
+  const PlanView view = app::plan_view(plan);
+  EXPECT_EQ(step_caption(view, 0),
             "Step 0 of 2  \u00b7  initial stance\nstance: l_sole, r_sole on floor");
-  EXPECT_EQ(step_caption(plan, 2).rfind("Step 2 of 2  \u00b7  add ", 0), 0u);
-  EXPECT_EQ(plan_title(plan), "humanoid_stand");
+  EXPECT_EQ(step_caption(view, 2).rfind("Step 2 of 2  \u00b7  add ", 0), 0u);
+  EXPECT_EQ(plan_title(view), "humanoid_stand");
 }
 
 TEST(Figures, CaptionsNameTheEntityWhenTwoHaveASurfaceOfThatName) {

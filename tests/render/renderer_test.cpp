@@ -2,6 +2,7 @@
 // Runs with no display at all (OSMesa).
 #include <gtest/gtest.h>
 
+#include "app/pipeline.h"
 #include "planner/io/plan_reader.h"
 #include "planner/model/urdf_loader.h"
 #include "render/figures/sequence.h"
@@ -90,10 +91,10 @@ TEST(Renderer, SameInputsGiveIdenticalPixels) {
   SequenceOptions options;
   options.width = 320;
   options.height = 240;
-  SequenceRenderer first(plan, options);
+  SequenceRenderer first(app::plan_view(plan), options);
   const Image a = first.render_step(1);
   const Image b = first.render_step(1);
-  SequenceRenderer second(plan, options);
+  SequenceRenderer second(app::plan_view(plan), options);
   const Image c = second.render_step(1);
   EXPECT_TRUE(a == b);
   EXPECT_TRUE(a == c);

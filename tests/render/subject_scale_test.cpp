@@ -3,6 +3,7 @@
 // ball.
 #include <gtest/gtest.h>
 
+#include "app/pipeline.h"
 #include "planner/io/plan_reader.h"
 #include "render/figures/sequence.h"
 #include "tests/render/render_fixtures.h"
@@ -36,7 +37,7 @@ TEST(SubjectScale, ForceArrowsOnTheHandStaySmallerThanTheBall) {
   options.height = 480;
   options.style = test::plain_style();
   options.style.center_of_mass = false;
-  const Image image = SequenceRenderer(plan, options).render_step(0);
+  const Image image = SequenceRenderer(app::plan_view(plan), options).render_step(0);
   // At the humanoid's sizes (the largest arrow 0.3 m long, 6 mm thick) the arrows cover a large
   // part of the picture of a 9 cm ball; scaled to the hand they are thin strokes.
   const double red = red_fraction(image);

@@ -1,4 +1,5 @@
 // The render thread of the 3-D view and the panel's exports, off-screen (OSMesa: no display).
+#include "app/pipeline.h"
 #include "app/gui/view_renderer.h"
 
 #include <gtest/gtest.h>
@@ -84,17 +85,15 @@ TEST_F(ViewRendererTest, ExportsTheViewAndTheStripOfThePlanFound) {
   session.start();
   ASSERT_TRUE(session.wait_until_finished(120s));
   ASSERT_EQ(session.result()->status, PlanStatus::Found);
-  const auto plan =
-      std::make_shared<const LoadedPlan>(loaded_plan(scenario_, session.result()->plan));
-  EXPECT_EQ(plan->plan.steps.size(), session.result()->plan.steps.size());
-  EXPECT_EQ(render::plan_title(*plan), "humanoid_walk");
+  const auto plan = std::make_shared<const Plan>(session.result()->plan);
+  EXPECT_EQ(render::plan_title(app::plan_view(scenario_, *plan)), "humanoid_walk");
 
   const std::filesystem::path dir = test::temp_dir("panel_exports");
   ViewRenderer view(scenario_.scene, render::RenderStyle::preview(), meshes_);
   ViewRequest r = request(320, 200);
-  r.q = plan->plan.steps.back().q;
+  r.q = plan->steps.back().q;
   view.post(export_view_job(scenario_.scene, r, meshes_, (dir / "view.png").string()));
-  view.post(export_strip_job(plan, meshes_, (dir / "strip.png").string()));
+  view.post(export_strip_job(scenario_, plan, meshes_, (dir / "strip.png").string()));
   ASSERT_TRUE(view.wait_for(view.request(request(32, 32)), 120s));  // after both jobs
   const std::vector<std::string> messages = view.take_messages();
   ASSERT_EQ(messages.size(), 2u);
@@ -105,7 +104,8 @@ TEST_F(ViewRendererTest, ExportsTheViewAndTheStripOfThePlanFound) {
   EXPECT_EQ(exported.height, 200);
   const render::Image strip = render::read_png((dir / "strip.png").string());
   const render::Image expected =
-      render::render_strip(*plan, render::StripOptions{}, render::SequenceOptions{}, meshes_);
+      render::render_strip(app::plan_view(scenario_, *plan), render::StripOptions{},
+                           render::SequenceOptions{}, meshes_);
   EXPECT_EQ(strip.width, expected.width);
   EXPECT_EQ(strip.height, expected.height);
 }

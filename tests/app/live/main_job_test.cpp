@@ -46,18 +46,6 @@ TEST(MainJob, AMissingScenarioIsBadInput) {
   EXPECT_FALSE(fs::exists(out)) << "nothing is written for bad input";
 }
 
-#ifndef STANCEPLAN_HAVE_PANEL
-// With a display and no --headless, the main job says the panel is not built and runs headless.
-TEST(MainJob, WithADisplayButNoPanelItFallsBackToHeadless) {
-  setenv("DISPLAY", ":99", 1);
-  EXPECT_TRUE(app::display_available());
-  const fs::path out = test::temp_dir("main_job_display") / "out";
-  const test::CliResult r = test::run_cli({"/nonexistent/scenario.yaml", "--out", out.string()});
-  EXPECT_EQ(r.code, 1);
-  EXPECT_THAT(r.err, HasSubstr("stanceplan: the panel is not built yet; running headless\n"));
-  unsetenv("DISPLAY");
-}
-#endif
 
 TEST(MainJob, TheDefaultScenarioIsFoundFromTheBuildWhateverTheCurrentFolder) {
   const fs::path before = fs::current_path();

@@ -1,0 +1,79 @@
+#pragma once
+// The steps the commands share, so that no command calls another (docs/ARCHITECTURE.md): plan a
+// scenario on a worker thread and write the certified plan (pipeline_plan.cpp), draw a plan's
+// steps, strip and GIF from a plan in memory or read back (pipeline_figures.cpp), and certify a
+// plan file (pipeline_certify.cpp). `plan`, `render`, `certify` and the main job are each a few
+// lines over these.
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/exit_codes.h"
+#include "app/plan_output.h"
+#include "planner/io/plan_reader.h"
+#include "planner/io/scenario.h"
+#include "planner/search/stance_search.h"
+#include "render/figures/plan_view.h"
+#include "render/figures/sequence.h"
+#include "render/scene/mesh_library.h"
+
+namespace stanceplan::app {
+
+// --- planning (pipeline_plan.cpp)
+struct PlanOptions {
+  std::string scenario;
+  std::string out = "plan.json";
+  std::optional<int> threads;
+  std::optional<double> time_limit;
+  std::optional<int> max_nodes;
+  bool verbose = false;
+  // When no plan is found: write the path from the initial stance to the stance closest to the
+  // goal as a plan marked partial ("partial" in the file, a line on `err`); the exit code stays 2.
+  bool partial = false;
+  // Live snapshots (app/live/snapshot_writer.h): every search event as DIR/event_NNNNN_KIND.png
+  // and DIR/events.jsonl, drawn off the search thread; then the plan's steps as DIR/steps/ and
+  // DIR/strip.png. Empty: none.
+  std::string snapshots;
+  bool snapshots_rejected = true;  // false: rejected candidates are listed without an image
+  bool stats = false;              // print timing figures (search, snapshots, final render)
+};
+
+// A scenario planned: the exit code (0: a certified plan written to PlanOptions::out; 2: no plan,
+// or one that failed certification), the scenario and, when the search ran, its result.
+struct Planned {
+  int code = kExitFailed;
+  std::shared_ptr<const Scenario> scenario;
+  std::optional<SearchResult> result;
+  bool written() const { return code == kExitSuccess; }
+};
+// Throws InputError on bad input (the scenario file, a stance placed into itself).
+Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostream& err);
+
+// --- figures (pipeline_figures.cpp)
+// The figures' view of a plan read from its file (named after its scenario file, else itself) or
+// of a plan in memory with the scenario it was planned in.
+render::PlanView plan_view(const LoadedPlan& loaded);
+render::PlanView plan_view(const Scenario& scenario, const Plan& plan);
+
+// The default look of the figures for a plan (1280 x 720, three-quarter view, its friction).
+render::SequenceOptions figure_options(const render::PlanView& plan);
+
+// What to draw; an empty name draws nothing of that kind.
+struct FigureFiles {
+  std::string steps_dir;  // DIR/step_000.png, ...
+  std::string strip;      // the figure strip (PNG)
+  std::string gif;        // an animated GIF of the steps
+};
+// Draws the files (one mesh library for all: each mesh file read once, each warning printed
+// once); says what it wrote on `out`, missing meshes on `err`.
+void render_figures(const render::PlanView& plan, const render::SequenceOptions& options,
+                    const FigureFiles& files, std::ostream& out, std::ostream& err);
+
+// --- certification (pipeline_certify.cpp)
+// `stanceplan certify`: reads the plan file back and re-checks it from the file and the models
+// alone; prints the worst residual of each check. kExitSuccess when every check passes, else
+// kExitFailed; InputError on an unreadable plan.
+int certify_file(const std::string& path, std::ostream& out, std::ostream& err);
+
+}  // namespace stanceplan::app

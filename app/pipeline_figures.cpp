@@ -1,0 +1,93 @@
+// A plan's figures (app/pipeline.h): its steps, strip and GIF, drawn off-screen from a plan in
+// memory or read back from its file.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <vector>
+
+#include "app/pipeline.h"
+#include "render/image/gif_writer.h"
+#include "render/image/png_io.h"
+
+namespace stanceplan::app {
+namespace {
+
+constexpr int kGifMaxWidth = 640;  // GIFs are for slides and READMEs: small files
+
+std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+void print_warnings(const std::vector<std::string>& warnings, std::ostream& err) {
+  for (const std::string& w : warnings) err << "stanceplan: warning: " << w << "\n";
+}
+
+void write_steps(const render::PlanView& plan, const render::SequenceOptions& options,
+                 const std::string& dir, const std::shared_ptr<render::MeshLibrary>& meshes,
+                 std::ostream& out, std::ostream& err) {
+  std::filesystem::create_directories(dir);
+  render::SequenceRenderer sequence(plan, options, meshes);
+  for (int i = 0; i < sequence.num_steps(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "step_%03d.png", i);
+    render::write_png((std::filesystem::path(dir) / name).string(), sequence.render_step(i));
+    print_warnings(sequence.take_warnings(), err);
+  }
+  out << "render: " << sequence.num_steps() << (sequence.num_steps() == 1 ? " image" : " images")
+      << " in " << dir << "\n";
+}
+
+void write_strip(const render::PlanView& plan, const render::SequenceOptions& options,
+                 const std::string& path, const std::shared_ptr<render::MeshLibrary>& meshes,
+                 std::ostream& out, std::ostream& err) {
+  std::vector<std::string> warnings;
+  const render::Image strip =
+      render::render_strip(plan, render::StripOptions{}, options, meshes, &warnings);
+  print_warnings(warnings, err);
+  render::write_png(path, strip);
+  out << "render: strip of " << plan.plan.steps.size()
+      << (plan.plan.steps.size() == 1 ? " step" : " steps") << " in " << path << "\n";
+}
+
+void write_gif(const render::PlanView& plan, render::SequenceOptions options,
+               const std::string& path, const std::shared_ptr<render::MeshLibrary>& meshes,
+               std::ostream& out, std::ostream& err) {
+  if (options.width > kGifMaxWidth) {
+    options.height = std::max(16, options.height * kGifMaxWidth / options.width);
+    options.width = kGifMaxWidth;
+  }
+  options.style.legend = false;  // too small to read in a GIF; the colours speak for themselves
+  render::SequenceRenderer sequence(plan, options, meshes);
+  std::vector<render::Image> frames;
+  for (int i = 0; i < sequence.num_steps(); ++i) frames.push_back(sequence.render_step(i));
+  print_warnings(sequence.take_warnings(), err);
+  render::write_gif(path, frames);
+  out << "render: animated GIF of " << frames.size() << " frames in " << path << "\n";
+}
+
+}  // namespace
+
+render::PlanView plan_view(const LoadedPlan& loaded) {
+  return {loaded.scene, loaded.plan, loaded.friction,
+          stem(loaded.scenario.empty() ? loaded.file : loaded.scenario)};
+}
+
+render::PlanView plan_view(const Scenario& scenario, const Plan& plan) {
+  return {scenario.scene, plan, scenario.solver.friction, stem(scenario.file)};
+}
+
+render::SequenceOptions figure_options(const render::PlanView& plan) {
+  render::SequenceOptions options;
+  options.style.friction = plan.friction;
+  return options;
+}
+
+void render_figures(const render::PlanView& plan, const render::SequenceOptions& options,
+                    const FigureFiles& files, std::ostream& out, std::ostream& err) {
+  const auto meshes = std::make_shared<render::MeshLibrary>();
+  if (!files.steps_dir.empty()) write_steps(plan, options, files.steps_dir, meshes, out, err);
+  if (!files.strip.empty()) write_strip(plan, options, files.strip, meshes, out, err);
+  if (!files.gif.empty()) write_gif(plan, options, files.gif, meshes, out, err);
+}
+
+}  // namespace stanceplan::app

@@ -1,0 +1,201 @@
+// Planning a scenario (app/pipeline.h): the search on its worker thread, the progress line or
+// the event log, live snapshots, the certified plan, and the final sequence from memory.
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <ostream>
+#include <sstream>
+
+#include "app/exit_codes.h"
+#include "app/live/plan_session.h"
+#include "app/live/snapshot_writer.h"
+#include "app/pipeline.h"
+#include "app/plan_output.h"
+#include "planner/search/plan_path.h"
+#include "planner/search/stance_search.h"
+#include "planner/util/fork_gate.h"
+
+namespace stanceplan::app {
+namespace {
+
+// SIGINT / SIGTERM cancel the running search (its cancel flag is an atomic store, which is
+// async-signal-safe); the search then stops before its next solver iteration.
+std::atomic<PlanSession*> g_running{nullptr};
+
+extern "C" void cancel_running_search(int) {
+  if (PlanSession* session = g_running.load()) session->cancel_search();
+}
+
+// Installs the handlers for the lifetime of one search, restoring the previous ones after.
+class CancelOnSignal {
+ public:
+  explicit CancelOnSignal(PlanSession& session) {
+    g_running = &session;
+    struct sigaction action {};
+    action.sa_handler = cancel_running_search;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &previous_int_);
+    sigaction(SIGTERM, &action, &previous_term_);
+  }
+  ~CancelOnSignal() {
+    sigaction(SIGINT, &previous_int_, nullptr);
+    sigaction(SIGTERM, &previous_term_, nullptr);
+    g_running = nullptr;
+  }
+
+ private:
+  struct sigaction previous_int_ {}, previous_term_ {};
+};
+
+std::string describe(const Scene& scene, const Stance& stance) {
+  std::string out = "{";
+  for (const Contact& c : stance.contacts())
+    out += (out.size() > 1 ? ", " : "") + scene.surfaces.id(scene.system, c.s1) + "-" + scene.surfaces.id(scene.system, c.s2);
+  return out + "}";
+}
+
+// Takes the session's events on the calling thread, in order, until the search ends; `report`
+// prints each (the search thread never waits for the terminal).
+void follow(const PlanSession& session, const std::function<void(const SearchEvent&)>& report) {
+  constexpr std::chrono::milliseconds kPoll{100};
+  for (size_t i = 0;;) {
+    if (session.wait_for_event(i, kPoll))
+      report(session.event(i++));
+    else if (session.finished())
+      return;
+  }
+}
+
+// The plan's steps as DIR/steps/step_NNN.png and DIR/strip.png, from the plan in memory.
+void render_final_sequence(const Scenario& scenario, const Plan& plan, const std::string& dir,
+                           std::ostream& out, std::ostream& err) {
+  const render::PlanView view = plan_view(scenario, plan);
+  render_figures(view, figure_options(view),
+                 {(std::filesystem::path(dir) / "steps").string(),
+                  (std::filesystem::path(dir) / "strip.png").string(), ""},
+                 out, err);
+}
+
+void print_search_stats(const SearchResult& result, size_t events, std::ostream& out) {
+  out << "stats: search " << std::fixed << std::setprecision(3) << result.wall_time_s << " s wall, "
+      << result.solver_time_s << " s in solves, " << result.nodes_expanded << " nodes expanded, "
+      << result.solver_calls << " solver calls, " << result.plan.stats.threads << " solver processes, " << events
+      << " events\n";
+}
+
+void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::ostream& out) {
+  out << "stats: snapshots " << s.images << " images for " << s.events << " events in " << dir << ", " << std::fixed
+      << std::setprecision(1) << s.image_ms_median << " ms median per image (render + PNG), " << s.backlog_at_search_end
+      << " left when the search ended, drawn in " << std::setprecision(2) << s.drain_s << " s after it\n";
+}
+
+// --partial: the steps from the root to the node closest to the goal, marked partial in the file
+// (certified like a whole plan: only its certified prefix is written).
+void write_partial_plan(const SearchResult& result, const Scenario& scenario, const std::string& path, std::ostream& err) {
+  if (result.closest_node < 0) {
+    err << "  no partial plan: the search has no node (the initial stance was not realised)\n";
+    return;
+  }
+  Plan plan = plan_to_node(result.tree, result.closest_node);
+  plan.stats = result.plan.stats;
+  plan.partial = std::string(to_string(result.status)) + ": " + result.message;
+  const size_t steps = plan.steps.size();
+  if (write_certified_plan(std::move(plan), scenario, path, true, err) != kExitSuccess) return;
+  err << "stanceplan: wrote a PARTIAL plan to " << path << ": " << steps
+      << " steps from the initial stance to the closest stance; it does not reach the goal\n";
+}
+
+}  // namespace
+
+Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostream& err) {
+  const auto started = std::chrono::steady_clock::now();
+  Planned planned;
+  planned.scenario = std::make_shared<const Scenario>(load_scenario(options.scenario));
+  const Scenario& scenario = *planned.scenario;
+  SearchOptions search = scenario.search;
+  if (options.threads) search.threads = *options.threads;
+  if (options.time_limit) search.time_limit_s = *options.time_limit;
+  if (options.max_nodes) search.max_nodes = *options.max_nodes;
+  PlanSession session(scenario, search);
+  std::optional<SnapshotWriter> snapshots;
+  if (!options.snapshots.empty()) snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});
+  const bool live = isatty(STDERR_FILENO) && &err == &std::cerr;
+  const int milestones = static_cast<int>(scenario.milestones.size());
+  int solver_calls = 0;
+  size_t events = 0;
+  auto report = [&](const SearchEvent& e) {
+    ++events;
+    if (e.kind == SearchEventKind::Candidate) ++solver_calls;
+    if (options.verbose) {
+      err << "[" << e.number << "] " << to_string(e.kind) << " node " << e.node << " " << describe(scenario.scene, e.stance);
+      if (e.kind == SearchEventKind::Candidate)
+        err << (e.candidate_case == CandidateCase::Add ? " add " : e.candidate_case == CandidateCase::Remove ? " remove " : " ")
+            << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " (" << std::fixed
+            << std::setprecision(1) << e.time_ms << " ms, " << e.iterations << " iterations)";
+      err << "\n";
+    } else if (live) {
+      err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones << "  solver calls "
+          << solver_calls << "   " << std::flush;
+    }
+  };
+  {
+    CancelOnSignal on_signal(session);
+    {
+      // The search forks its solver workers at once: not while this thread is still starting
+      // the snapshot thread (planner/util/fork_gate.h; a worker hung so under ASan).
+      const ForkGate::Pass pass;
+      session.start();
+      if (snapshots) snapshots->start();
+    }
+    follow(session, report);
+  }
+  if (live && !options.verbose) err << "\n";
+  if (const std::exception_ptr error = session.error()) std::rethrow_exception(error);
+  planned.result = *session.result();
+  const SearchResult& result = *planned.result;
+  if (options.stats) print_search_stats(result, events, out);
+  const bool found = result.status == PlanStatus::Found;
+  const int written = found ? write_certified_plan(result.plan, scenario, options.out, options.partial, err)
+                            : kExitFailed;
+  if (written == kExitSuccess) {
+    out << "wrote " << options.out << ": " << result.plan.steps.size() << " steps, " << result.nodes_expanded
+        << " nodes expanded, " << result.solver_calls << " solver calls, " << std::fixed << std::setprecision(2)
+        << result.wall_time_s << " s\n";
+  }
+  if (snapshots) {  // the backlog, if the writer fell behind, is drawn now
+    const SnapshotStats stats = snapshots->finish();
+    out << "snapshots: " << stats.images << " images of " << stats.events << " search events in " << options.snapshots
+        << " (index " << SnapshotWriter::kIndexFile << ")\n";
+    if (options.stats) print_snapshot_stats(stats, options.snapshots, out);
+    if (written == kExitSuccess) render_final_sequence(scenario, result.plan, options.snapshots, out, err);
+  }
+  planned.code = kExitFailed;
+  if (found && written != kExitSuccess) return planned;  // why: on err (write_certified_plan)
+  if (!found) {
+    err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message << "\n";
+    if (result.closest_node >= 0)
+      err << "  closest stance to the goal: " << describe(scenario.scene, result.tree[result.closest_node].stance()) << "\n";
+    err << "  goal stance: " << describe(scenario.scene, scenario.stance(scenario.goal_stance)) << "\n";
+    err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls << " solver calls, "
+        << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
+    if (options.partial) write_partial_plan(result, scenario, options.out, err);
+    return planned;
+  }
+  if (options.stats)
+    out << "stats: total " << std::fixed << std::setprecision(3)
+        << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() << " s\n";
+  planned.code = kExitSuccess;
+  return planned;
+}
+
+}  // namespace stanceplan::app
