@@ -23,7 +23,6 @@
 #include "app/plan_output.h"
 #include "planner/search/plan_path.h"
 #include "planner/search/stance_search.h"
-#include "planner/util/fork_gate.h"
 
 namespace stanceplan::app {
 namespace {
@@ -150,13 +149,9 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   };
   {
     CancelOnSignal on_signal(session);
-    {
-      // The search forks its solver workers at once: not while this thread is still starting
-      // the snapshot thread (planner/util/fork_gate.h; a worker hung so under ASan).
-      const ForkGate::Pass pass;
-      session.start();
-      if (snapshots) snapshots->start();
-    }
+    // The solver workers were forked when the session was made, before any other thread.
+    session.start();
+    if (snapshots) snapshots->start();
     follow(session, report);
   }
   if (live && !options.verbose) err << "\n";

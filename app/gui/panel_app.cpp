@@ -92,12 +92,12 @@ class PanelApp {
   PanelApp(const Scenario& scenario, const PanelOptions& options)
       : scenario_(scenario),
         options_(options),
+        session_(std::make_unique<PlanSession>(scenario, search_options(scenario, options))),
         window_(options.width, options.height, "stanceplan \u2014 " + scenario.name),
         meshes_(std::make_shared<render::MeshLibrary>()),
         style_(live_style(scenario)),
         view_(scenario.scene, style_, meshes_),
         texture_(window_.gl()),
-        session_(std::make_unique<PlanSession>(scenario, search_options(scenario, options))),
         driver_(session_->gate(), options.start_paused) {
     driver_.set_speed_limit(options.speed_limit);
     state_.speed_limit = static_cast<float>(options.speed_limit);
@@ -127,12 +127,14 @@ class PanelApp {
 
   const Scenario& scenario_;
   PanelOptions options_;
+  // Made first: its solver worker processes fork before the window, GL and the render thread
+  // start any thread (solver_pool.h).
+  std::unique_ptr<PlanSession> session_;
   GuiWindow window_;
   std::shared_ptr<render::MeshLibrary> meshes_;
   render::RenderStyle style_;
   ViewRenderer view_;
   ViewTexture texture_;
-  std::unique_ptr<PlanSession> session_;
   SearchDriver driver_;
   SessionMirror mirror_;
   PanelState state_;

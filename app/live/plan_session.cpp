@@ -6,7 +6,11 @@
 namespace stanceplan::app {
 
 PlanSession::PlanSession(const Scenario& scenario, SearchOptions options)
-    : scenario_(scenario), search_(scenario, std::move(options)) {
+    : scenario_(scenario),
+      pool_solver_(scenario.scene, scenario.solver),
+      pool_(pool_solver_, solver_processes(options)),
+      search_(scenario, std::move(options)) {
+  search_.set_solver_pool(&pool_);
   search_.set_gate(&gate_);
   search_.set_observer([this](const SearchEvent& e) { record(e); });
 }

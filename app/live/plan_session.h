@@ -14,12 +14,16 @@
 #include "planner/io/scenario.h"
 #include "planner/search/search_events.h"
 #include "planner/search/stance_search.h"
+#include "planner/solver/posture_solver.h"
+#include "planner/solver/solver_pool.h"
 
 namespace stanceplan::app {
 
 class PlanSession {
  public:
-  PlanSession(const Scenario& scenario, SearchOptions options);  // scenario outlives the session
+  // Makes the solver worker processes at once, on the calling thread (before the caller starts
+  // other threads: solver_pool.h); the scenario outlives the session.
+  PlanSession(const Scenario& scenario, SearchOptions options);
   ~PlanSession();                                                // cancels and joins
   PlanSession(const PlanSession&) = delete;
   PlanSession& operator=(const PlanSession&) = delete;
@@ -50,6 +54,8 @@ class PlanSession {
   void run();
 
   const Scenario& scenario_;
+  PostureSolver pool_solver_;  // the solver the worker processes copy
+  SolverPool pool_;
   StanceSearch search_;
   StepGate gate_;
   std::thread worker_;

@@ -3,7 +3,6 @@
 #include "planner/search/search_run.h"
 
 #include <algorithm>
-#include <thread>
 #include <utility>
 
 #include "planner/search/plan_path.h"
@@ -15,11 +14,6 @@ namespace {
 SolverOptions cancellable(SolverOptions options, const std::atomic<bool>* cancel) {
   options.cancel = cancel;
   return options;
-}
-
-int thread_count(const SearchOptions& options) {
-  return options.threads > 0 ? options.threads
-                             : int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 // Backtracking, last form (docs/METHOD.md section 3: further configurations for already-expanded
@@ -50,8 +44,9 @@ StanceSearch::Run::Run(StanceSearch& search)
       solver_(problem_.scene, cancellable(problem_.solver, &search.cancelled_)),
       goal_(problem_.stance(problem_.goal_stance)),
       guide_(problem_.scene.system, problem_.milestones, problem_.milestone_masks),
-      threads_(thread_count(options_)),
-      pool_(solver_, threads_),
+      threads_(solver_processes(options_)),
+      own_pool_(search.pool_ ? nullptr : std::make_unique<SolverPool>(solver_, threads_)),
+      pool_(search.pool_ ? *search.pool_ : *own_pool_),
       tree_(result_.tree) {}
 
 SearchResult StanceSearch::Run::run() {

@@ -10,6 +10,7 @@
 //   search_event_builders.h  the events it publishes.
 #include <chrono>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,7 +80,10 @@ class StanceSearch::Run {
   const Stance goal_;
   const GuidePath guide_;
   const int threads_;
-  SolverPool pool_;  // worker processes (Ipopt is not thread-safe): made before any solve
+  // Worker processes (Ipopt is not thread-safe): the caller's (StanceSearch::set_solver_pool),
+  // else the run's own, made before any solve.
+  std::unique_ptr<SolverPool> own_pool_;
+  SolverPool& pool_;
   SearchResult result_;
   std::vector<SearchNode>& tree_;
   int t_ = 0;               // the targeted milestone

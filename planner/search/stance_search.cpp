@@ -1,5 +1,8 @@
 #include "planner/search/stance_search.h"
 
+#include <algorithm>
+#include <thread>
+
 #include "planner/search/search_run.h"
 #include "planner/search/stance_checks.h"
 
@@ -15,6 +18,11 @@ const char* to_string(PlanStatus status) {
     case PlanStatus::InitialInfeasible: return "initial stance infeasible";
   }
   return "?";
+}
+
+int solver_processes(const SearchOptions& options) {
+  return options.threads > 0 ? options.threads
+                             : int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 StanceSearch::StanceSearch(const Problem& problem, SearchOptions options)

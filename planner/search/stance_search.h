@@ -44,11 +44,21 @@ struct SearchResult {
   double solver_time_s = 0.0;     // summed over solves
 };
 
+class SolverPool;
+
+// How many solver processes a search with these options uses (SearchOptions::threads, or one per
+// core when 0).
+int solver_processes(const SearchOptions& options);
+
 class StanceSearch {
  public:
   StanceSearch(const Problem& problem, SearchOptions options);
 
   void set_observer(SearchObserver observer) { observer_ = std::move(observer); }
+  // The worker processes for candidate solves, made by the caller before its other threads start
+  // (solver_pool.h; solver_processes(options) of them, for the plan's stats to be true) and kept
+  // alive for the run. None: the run makes its own when it starts.
+  void set_solver_pool(SolverPool* pool) { pool_ = pool; }
   void set_gate(StepGate* gate) { gate_ = gate; }
   // Thread-safe: the search stops before its next solver call.
   void cancel() { cancelled_ = true; }
@@ -65,6 +75,7 @@ class StanceSearch {
   SearchOptions options_;
   SearchObserver observer_;
   StepGate* gate_ = nullptr;
+  SolverPool* pool_ = nullptr;
   std::atomic<bool> cancelled_{false};
   int next_event_ = 0;
 };

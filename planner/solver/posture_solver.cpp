@@ -404,6 +404,18 @@ std::vector<bool> PostureSolver::excluded_pairs(const PostureRequest& request) c
 }
 
 PostureResult PostureSolver::solve(const PostureRequest& request) const {
+  return solve_with(request, options_);
+}
+
+PostureResult PostureSolver::solve(const PostureRequest& request,
+                                   const std::atomic<bool>* cancel) const {
+  SolverOptions options = options_;
+  options.cancel = cancel;
+  return solve_with(request, options);
+}
+
+PostureResult PostureSolver::solve_with(const PostureRequest& request,
+                                        const SolverOptions& options) const {
   validate(request);
   // An unusable guess (e.g. a NaN from a degenerate configuration upstream) is a failed candidate
   // with its reason, not a malformed request; Ipopt never sees it.
@@ -413,16 +425,16 @@ PostureResult PostureSolver::solve(const PostureRequest& request) const {
     result.message = std::move(reason);
     return result;
   }
-  const bool collisions = scene_.collision && options_.enforce_collisions;
+  const bool collisions = scene_.collision && options.enforce_collisions;
   // Pinned pairs have no row in the program: their distance follows from the fixed placements
   // alone, so a stance that puts them into each other is infeasible before any solve.
   if (collisions) {
     std::vector<ModelData> pinned = system_kinematics(scene_.system, request.q_init);
     place_pinned_links(scene_, request, pinned);
-    if (auto failed = pinned_pair_collision(scene_, request, pinned, options_.collision_margin))
+    if (auto failed = pinned_pair_collision(scene_, request, pinned, options.collision_margin))
       return *failed;
   }
-  PostureResult result = solve_once(request, options_);
+  PostureResult result = solve_once(request, options);
   // No NaN reaches a plan: a "solved" result with a non-finite number in it is a failure.
   if (const std::string part = result.non_finite_part();
       result.status == PostureStatus::Solved && !part.empty()) {
@@ -433,24 +445,25 @@ PostureResult PostureSolver::solve(const PostureRequest& request) const {
   if (result.status == PostureStatus::Solved && collisions)
     if (auto failed = pinned_pair_collision(scene_, request,
                                             system_kinematics(scene_.system, result.q),
-                                            options_.collision_margin)) {
+                                            options.collision_margin)) {
       failed->q = result.q;
       failed->iterations = result.iterations;
       failed->time_ms = result.time_ms;
       return *failed;
     }
-  if (result.status != PostureStatus::Solved && options_.diagnose_infeasibility)
-    diagnose(request, result);
+  if (result.status != PostureStatus::Solved && options.diagnose_infeasibility)
+    diagnose(request, options, result);
   return result;
 }
 
-void PostureSolver::diagnose(const PostureRequest& request, PostureResult& result) const {
-  SolverOptions relaxed = options_;
+void PostureSolver::diagnose(const PostureRequest& request, const SolverOptions& options,
+                             PostureResult& result) const {
+  SolverOptions relaxed = options;
   relaxed.enforce_torque_limits = false;
   if (solve_once(request, relaxed).status == PostureStatus::Solved) {
     result.blocking_family = "torque_limits";
   } else if (scene_.collision) {
-    relaxed = options_;
+    relaxed = options;
     relaxed.enforce_collisions = false;
     if (solve_once(request, relaxed).status == PostureStatus::Solved)
       result.blocking_family = "collision";

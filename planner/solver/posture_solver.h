@@ -2,6 +2,7 @@
 // The inverse-kinematics-and-statics solver of docs/METHOD.md section 4: one nonlinear program over
 // (q, lambda) per call, solved by Ipopt with exact first derivatives. Thread-safe: solve() may be
 // called from several threads (Ipopt itself is serialised inside the adapter).
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,9 @@ class PostureSolver {
   // Throws std::invalid_argument when the request is malformed (sizes, unknown surfaces, a
   // surface used twice, a contact within one link); every solver outcome is a status.
   PostureResult solve(const PostureRequest& request) const;
+  // The same with the options' cancel flag replaced by `cancel` (a solve stops at its next
+  // iteration once it is true): one solver can serve searches with flags of their own.
+  PostureResult solve(const PostureRequest& request, const std::atomic<bool>* cancel) const;
 
   const SolverOptions& options() const { return options_; }
   const Scene& scene() const { return scene_; }
@@ -32,7 +36,9 @@ class PostureSolver {
  private:
   void validate(const PostureRequest& request) const;
   PostureResult solve_once(const PostureRequest& request, const SolverOptions& options) const;
-  void diagnose(const PostureRequest& request, PostureResult& result) const;
+  PostureResult solve_with(const PostureRequest& request, const SolverOptions& options) const;
+  void diagnose(const PostureRequest& request, const SolverOptions& options,
+                PostureResult& result) const;
 
   const Scene& scene_;
   SolverOptions options_;

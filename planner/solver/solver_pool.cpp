@@ -153,7 +153,9 @@ std::vector<PostureResult> SolverPool::solve_all(const std::vector<PostureReques
   const auto cancelled = [&] { return cancel && cancel->load(); };
   if (workers_.empty()) {
     for (size_t i = 0; i < requests.size(); ++i)
-      results[i] = cancelled() ? failure("cancelled") : solver_.solve(requests[i]);
+      results[i] = cancelled() ? failure("cancelled")
+                   : cancel   ? solver_.solve(requests[i], cancel)  // running solves stop too
+                              : solver_.solve(requests[i]);
     return results;
   }
   shared_cancel_->store(false);

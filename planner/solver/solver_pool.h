@@ -2,9 +2,10 @@
 // Parallel solves in worker processes. Ipopt 3.11 with MUMPS is not thread-safe
 // (docs/DEPENDENCIES.md section 1: two threads crash), so in-process solves are serialised by a
 // mutex and threads give no speed-up; separate processes do. The pool forks its workers when it is
-// made: create it before other threads start and before any solve (a fork copies only the calling
-// thread). Each worker holds a copy of the scene and answers requests over a pipe; a worker that
-// dies yields a NumericalFailure result for its request and is replaced. The pool ignores SIGPIPE
+// made: its owner (the app's PlanSession) makes it before other threads start (a fork copies only
+// the calling thread) and hands it to the search. Each worker holds a copy of the scene and
+// answers requests over a pipe; a worker that dies yields a NumericalFailure result for its
+// request and is replaced. The pool ignores SIGPIPE
 // process-wide (a write to a dead worker's pipe must fail, not end the planner). Results come back
 // in request order: the caller's behaviour does not depend on the number of processes.
 #include <atomic>
