@@ -6,21 +6,22 @@
 
 #include "app/certify_command.h"
 #include "app/cli_validators.h"
+#include "app/gui/panel_command.h"
 #include "app/inspect_command.h"
 #include "app/live/data_dir.h"
 #include "app/live/main_job.h"
 #include "app/plan_command.h"
 #include "app/posture_command.h"
 #include "app/render_command.h"
-#include "app/gui/panel_command.h"
 #include "planner/util/input_error.h"
 
 namespace stanceplan::app {
 namespace {
 
 void add_inspect(CLI::App& cli, InspectOptions& options) {
-  CLI::App* cmd = cli.add_subcommand("inspect", "Describe a URDF model: kind, joints, limits, mass, "
-                                                "links, contact surfaces, collision geometry");
+  CLI::App* cmd = cli.add_subcommand("inspect",
+                                     "Describe a URDF model: kind, joints, limits, mass, "
+                                     "links, contact surfaces, collision geometry");
   cmd->add_option("model", options.urdf, "URDF file")->required();
   cmd->add_option("--surfaces", options.surfaces, "surface file (stanceplan/surfaces@1 YAML)");
   cmd->add_option("--srdf", options.srdf, "SRDF file with disabled collision pairs");
@@ -35,32 +36,43 @@ void add_inspect(CLI::App& cli, InspectOptions& options) {
 }
 
 void add_posture(CLI::App& cli, PostureOptions& options) {
-  CLI::App* cmd = cli.add_subcommand("posture", "Solve one stance of a scenario (every contact loaded) and write "
-                                                "it as a one-step plan. Exit 2 when no posture exists");
-  cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")->required();
+  CLI::App* cmd =
+      cli.add_subcommand("posture",
+                         "Solve one stance of a scenario (every contact loaded) and write "
+                         "it as a one-step plan. Exit 2 when no posture exists");
+  cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")
+      ->required();
   cmd->add_option("--stance", options.stance, "which stance: initial or goal")
       ->check(CLI::IsMember({"initial", "goal"}));
   cmd->add_option("--out", options.out, "plan file to write (default: standard output)");
 }
 
 void add_plan(CLI::App& cli, PlanOptions& options) {
-  CLI::App* cmd = cli.add_subcommand("plan", "Plan a scenario: a sequence of stances with transition postures. "
-                                             "Exit 2 when no plan is found");
-  cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")->required();
+  CLI::App* cmd =
+      cli.add_subcommand("plan",
+                         "Plan a scenario: a sequence of stances with transition postures. "
+                         "Exit 2 when no plan is found");
+  cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")
+      ->required();
   cmd->add_option("--out", options.out, "plan file to write (default: plan.json)");
-  cmd->add_option("--threads", options.threads, "candidate solves in parallel (default: the number of cores)")
+  cmd->add_option("--threads", options.threads,
+                  "candidate solves in parallel (default: the number of cores)")
       ->check(whole_number_in(1, 256));
-  cmd->add_option("--time-limit", options.time_limit, "seconds before giving up (default: the scenario's)")
+  cmd->add_option("--time-limit", options.time_limit,
+                  "seconds before giving up (default: the scenario's)")
       ->check(finite_positive());
-  cmd->add_option("--max-nodes", options.max_nodes, "expanded nodes before giving up (default: the scenario's)")
+  cmd->add_option("--max-nodes", options.max_nodes,
+                  "expanded nodes before giving up (default: the scenario's)")
       ->check(whole_number_in(1, 100000000));
   cmd->add_flag("--verbose", options.verbose, "print every search event on stderr");
-  cmd->add_flag("--partial", options.partial,
-                "when no plan is found, write the steps to the stance closest to the goal as a plan marked "
-                "\"partial\" (the exit code stays 2)");
-  cmd->add_option("--snapshots", options.snapshots,
-                  "draw every search event into DIR (event_NNNNN_KIND.png, events.jsonl) off the search "
-                  "thread, then the plan's steps (DIR/steps/) and strip (DIR/strip.png)");
+  cmd->add_flag(
+      "--partial", options.partial,
+      "when no plan is found, write the steps to the stance closest to the goal as a plan marked "
+      "\"partial\" (the exit code stays 2)");
+  cmd->add_option(
+      "--snapshots", options.snapshots,
+      "draw every search event into DIR (event_NNNNN_KIND.png, events.jsonl) off the search "
+      "thread, then the plan's steps (DIR/steps/) and strip (DIR/strip.png)");
   cmd->add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
                 "with --snapshots: list rejected candidates in events.jsonl without drawing them");
   cmd->add_flag("--stats", options.stats, "print timings: search, solves, snapshots, total");
@@ -73,7 +85,8 @@ void add_main_job(CLI::App& cli, MainJobOptions& options) {
                      " from the installed or source data folder)");
   cli.add_flag("--headless", options.headless, "main job: no window even when a display exists");
   cli.add_option("--out", options.out_dir, "main job: output folder (default: ./stanceplan-out)");
-  cli.add_option("--threads", options.threads, "main job: candidate solves in parallel (default: the number of cores)")
+  cli.add_option("--threads", options.threads,
+                 "main job: candidate solves in parallel (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   cli.add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
                "main job: list rejected candidates without drawing them");
@@ -87,8 +100,9 @@ void add_main_job(CLI::App& cli, MainJobOptions& options) {
 }  // namespace
 
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App cli{"stanceplan: multi-contact stance planning (Bouyarmane & Kheddar 2012).\n"
-               "Exit codes: 0 success, 1 bad input or usage, 2 no plan found / check failed."};
+  CLI::App cli{
+      "stanceplan: multi-contact stance planning (Bouyarmane & Kheddar 2012).\n"
+      "Exit codes: 0 success, 1 bad input or usage, 2 no plan found / check failed."};
   cli.require_subcommand(0, 1);
   MainJobOptions main_job;
   add_main_job(cli, main_job);
@@ -103,8 +117,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   PanelOptions panel;
   add_panel_subcommand(cli, panel);
   std::string certify_plan;
-  cli.add_subcommand("certify", "Re-check a plan from the plan file and the models alone (never the solver). "
-                                "Exit 2 when a check fails")
+  cli.add_subcommand("certify",
+                     "Re-check a plan from the plan file and the models alone (never the solver). "
+                     "Exit 2 when a check fails")
       ->add_option("plan", certify_plan, "plan file (stanceplan/plan@1 JSON)")
       ->required();
   try {
@@ -113,7 +128,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     out << cli.help();
     return kExitSuccess;
   } catch (const CLI::ParseError& e) {
-    err << "stanceplan: " << e.what() << "\n" << "Run 'stanceplan --help' for usage.\n";
+    err << "stanceplan: " << e.what() << "\n"
+        << "Run 'stanceplan --help' for usage.\n";
     return kExitBadInput;
   }
   try {

@@ -17,20 +17,28 @@ using nlohmann::json;
 
 const char* joint_type_name(JointType type) {
   switch (type) {
-    case JointType::Fixed: return "fixed";
-    case JointType::Revolute: return "revolute";
-    case JointType::Continuous: return "continuous";
-    case JointType::Prismatic: return "prismatic";
+    case JointType::Fixed:
+      return "fixed";
+    case JointType::Revolute:
+      return "revolute";
+    case JointType::Continuous:
+      return "continuous";
+    case JointType::Prismatic:
+      return "prismatic";
   }
   return "?";
 }
 
 const char* shape_name(ShapeType type) {
   switch (type) {
-    case ShapeType::Box: return "box";
-    case ShapeType::Cylinder: return "cylinder";
-    case ShapeType::Sphere: return "sphere";
-    case ShapeType::Mesh: return "mesh";
+    case ShapeType::Box:
+      return "box";
+    case ShapeType::Cylinder:
+      return "cylinder";
+    case ShapeType::Sphere:
+      return "sphere";
+    case ShapeType::Mesh:
+      return "mesh";
   }
   return "?";
 }
@@ -42,7 +50,9 @@ EntityKind decide_kind(const InspectOptions& options, const Model& model) {
   return kind;
 }
 
-json vector_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+json vector_json(const Eigen::Vector3d& v) {
+  return json::array({v.x(), v.y(), v.z()});
+}
 
 json describe(const Model& model, EntityKind kind, const std::vector<Surface>& surfaces) {
   json out;
@@ -55,13 +65,16 @@ json describe(const Model& model, EntityKind kind, const std::vector<Surface>& s
   json joints = json::array();
   for (const Joint& joint : model.joints) {
     if (!joint.movable()) continue;
-    json j = {{"name", joint.name}, {"type", joint_type_name(joint.type)},
+    json j = {{"name", joint.name},
+              {"type", joint_type_name(joint.type)},
               {"lower", joint.has_position_limits ? json(joint.lower) : json(nullptr)},
               {"upper", joint.has_position_limits ? json(joint.upper) : json(nullptr)},
-              {"effort", joint.effort}, {"velocity", joint.velocity},
+              {"effort", joint.effort},
+              {"velocity", joint.velocity},
               {"axis", vector_json(joint.axis)}};
     if (joint.is_mimic)
-      j["mimic"] = {{"joint", joint.mimic_source}, {"multiplier", joint.multiplier},
+      j["mimic"] = {{"joint", joint.mimic_source},
+                    {"multiplier", joint.multiplier},
                     {"offset", joint.offset}};
     joints.push_back(j);
   }
@@ -71,8 +84,10 @@ json describe(const Model& model, EntityKind kind, const std::vector<Surface>& s
     json collisions = json::array();
     for (const LinkGeometry& g : link.collisions) collisions.push_back(shape_name(g.shape.type));
     links.push_back({{"name", link.name},
-                     {"parent", link.parent_link < 0 ? json(nullptr) : json(model.links[link.parent_link].name)},
-                     {"mass", link.inertial.mass}, {"collision", collisions},
+                     {"parent", link.parent_link < 0 ? json(nullptr)
+                                                     : json(model.links[link.parent_link].name)},
+                     {"mass", link.inertial.mass},
+                     {"collision", collisions},
                      {"visuals", link.visuals.size()}});
   }
   out["links"] = links;
@@ -80,8 +95,10 @@ json describe(const Model& model, EntityKind kind, const std::vector<Surface>& s
   for (const Surface& s : surfaces) {
     json vertices = json::array();
     for (const auto& v : s.vertices_L()) vertices.push_back(vector_json(v));
-    surface_list.push_back({{"name", s.name}, {"link", s.link_name},
-                            {"normal", vector_json(s.normal_L())}, {"area", s.area()},
+    surface_list.push_back({{"name", s.name},
+                            {"link", s.link_name},
+                            {"normal", vector_json(s.normal_L())},
+                            {"area", s.area()},
                             {"vertices", vertices}});
   }
   out["surfaces"] = surface_list;
@@ -101,15 +118,16 @@ void print_text(const json& d, std::ostream& out) {
     if (j["lower"].is_null())
       out << "        unbounded";
     else
-      out << std::setw(8) << j["lower"].get<double>() << " .. " << std::setw(6) << j["upper"].get<double>();
+      out << std::setw(8) << j["lower"].get<double>() << " .. " << std::setw(6)
+          << j["upper"].get<double>();
     out << "   effort " << std::setw(7) << std::setprecision(1) << j["effort"].get<double>();
     if (j.contains("mimic")) out << "   mimics " << j["mimic"]["joint"].get<std::string>();
     out << "\n";
   }
   const json& c = d["collision"];
-  out << "collision: " << c["shapes"] << " shapes on " << c["links_with_geometry"] << " links (" << c["mesh_hulls"]
-      << " mesh convex hulls), " << c["candidate_pairs"] << " link pairs checked, " << c["srdf_disabled_pairs"]
-      << " disabled by the SRDF\n";
+  out << "collision: " << c["shapes"] << " shapes on " << c["links_with_geometry"] << " links ("
+      << c["mesh_hulls"] << " mesh convex hulls), " << c["candidate_pairs"]
+      << " link pairs checked, " << c["srdf_disabled_pairs"] << " disabled by the SRDF\n";
   out << "surfaces: " << d["surfaces"].size() << "\n";
   for (const json& s : d["surfaces"])
     out << "  " << std::left << std::setw(16) << s["name"].get<std::string>() << " on "
@@ -122,7 +140,8 @@ void print_text(const json& d, std::ostream& out) {
 
 // Builds the model's collision objects (convex hulls of meshes, primitives) and counts the pairs
 // the planner would check, with the SRDF's disabled pairs left out.
-json collision_summary(const std::shared_ptr<const Model>& model, EntityKind kind, const std::string& srdf) {
+json collision_summary(const std::shared_ptr<const Model>& model, EntityKind kind,
+                       const std::string& srdf) {
   System system;
   Entity entity;
   entity.name = model->name;
@@ -134,8 +153,10 @@ json collision_summary(const std::shared_ptr<const Model>& model, EntityKind kin
   const CollisionModel collision(system, options);
   size_t hulls = 0;
   for (const CollisionShape& shape : collision.shapes()) hulls += shape.hull != nullptr;
-  return {{"links_with_geometry", collision.links().size()}, {"shapes", collision.shapes().size()},
-          {"mesh_hulls", hulls}, {"candidate_pairs", collision.pairs().size()},
+  return {{"links_with_geometry", collision.links().size()},
+          {"shapes", collision.shapes().size()},
+          {"mesh_hulls", hulls},
+          {"candidate_pairs", collision.pairs().size()},
           {"srdf_disabled_pairs", collision.num_srdf_disabled_pairs()}};
 }
 

@@ -9,10 +9,10 @@ namespace stanceplan::app {
 
 struct InspectOptions {
   std::string urdf;
-  std::string surfaces;                   // optional surface file
-  std::string srdf;                       // optional SRDF (disabled collision pairs)
+  std::string surfaces;  // optional surface file
+  std::string srdf;      // optional SRDF (disabled collision pairs)
   std::vector<std::string> package_paths;
-  std::string kind = "auto";              // auto | fixed | floating | object | environment
+  std::string kind = "auto";  // auto | fixed | floating | object | environment
   bool json = false;
 };
 

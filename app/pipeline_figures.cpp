@@ -16,7 +16,9 @@ namespace {
 
 constexpr int kGifMaxWidth = 640;  // GIFs are for slides and READMEs: small files
 
-std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+std::string stem(const std::string& path) {
+  return std::filesystem::path(path).stem().string();
+}
 
 void print_warnings(const std::vector<std::string>& warnings, std::ostream& err) {
   for (const std::string& w : warnings) err << "stanceplan: warning: " << w << "\n";

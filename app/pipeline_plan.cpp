@@ -53,13 +53,15 @@ class CancelOnSignal {
   }
 
  private:
-  struct sigaction previous_int_ {}, previous_term_ {};
+  struct sigaction previous_int_ {
+  }, previous_term_{};
 };
 
 std::string describe(const Scene& scene, const Stance& stance) {
   std::string out = "{";
   for (const Contact& c : stance.contacts())
-    out += (out.size() > 1 ? ", " : "") + scene.surfaces.id(scene.system, c.s1) + "-" + scene.surfaces.id(scene.system, c.s2);
+    out += (out.size() > 1 ? ", " : "") + scene.surfaces.id(scene.system, c.s1) + "-" +
+           scene.surfaces.id(scene.system, c.s2);
   return out + "}";
 }
 
@@ -88,19 +90,22 @@ void render_final_sequence(const Scenario& scenario, const Plan& plan, const std
 void print_search_stats(const SearchResult& result, size_t events, std::ostream& out) {
   out << "stats: search " << std::fixed << std::setprecision(3) << result.wall_time_s << " s wall, "
       << result.solver_time_s << " s in solves, " << result.nodes_expanded << " nodes expanded, "
-      << result.solver_calls << " solver calls, " << result.plan.stats.threads << " solver processes, " << events
-      << " events\n";
+      << result.solver_calls << " solver calls, " << result.plan.stats.threads
+      << " solver processes, " << events << " events\n";
 }
 
 void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::ostream& out) {
-  out << "stats: snapshots " << s.images << " images for " << s.events << " events in " << dir << ", " << std::fixed
-      << std::setprecision(1) << s.image_ms_median << " ms median per image (render + PNG), " << s.backlog_at_search_end
-      << " left when the search ended, drawn in " << std::setprecision(2) << s.drain_s << " s after it\n";
+  out << "stats: snapshots " << s.images << " images for " << s.events << " events in " << dir
+      << ", " << std::fixed << std::setprecision(1) << s.image_ms_median
+      << " ms median per image (render + PNG), " << s.backlog_at_search_end
+      << " left when the search ended, drawn in " << std::setprecision(2) << s.drain_s
+      << " s after it\n";
 }
 
 // --partial: the steps from the root to the node closest to the goal, marked partial in the file
 // (certified like a whole plan: only its certified prefix is written).
-void write_partial_plan(const SearchResult& result, const Scenario& scenario, const std::string& path, std::ostream& err) {
+void write_partial_plan(const SearchResult& result, const Scenario& scenario,
+                        const std::string& path, std::ostream& err) {
   if (result.closest_node < 0) {
     err << "  no partial plan: the search has no node (the initial stance was not realised)\n";
     return;
@@ -127,7 +132,8 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   if (options.max_nodes) search.max_nodes = *options.max_nodes;
   PlanSession session(scenario, search);
   std::optional<SnapshotWriter> snapshots;
-  if (!options.snapshots.empty()) snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});
+  if (!options.snapshots.empty())
+    snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});
   const bool live = isatty(STDERR_FILENO) && &err == &std::cerr;
   const int milestones = static_cast<int>(scenario.milestones.size());
   int solver_calls = 0;
@@ -136,15 +142,19 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
     ++events;
     if (e.kind == SearchEventKind::Candidate) ++solver_calls;
     if (options.verbose) {
-      err << "[" << e.number << "] " << to_string(e.kind) << " node " << e.node << " " << describe(scenario.scene, e.stance);
+      err << "[" << e.number << "] " << to_string(e.kind) << " node " << e.node << " "
+          << describe(scenario.scene, e.stance);
       if (e.kind == SearchEventKind::Candidate)
-        err << (e.candidate_case == CandidateCase::Add ? " add " : e.candidate_case == CandidateCase::Remove ? " remove " : " ")
-            << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " (" << std::fixed
-            << std::setprecision(1) << e.time_ms << " ms, " << e.iterations << " iterations)";
+        err << (e.candidate_case == CandidateCase::Add      ? " add "
+                : e.candidate_case == CandidateCase::Remove ? " remove "
+                                                            : " ")
+            << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " ("
+            << std::fixed << std::setprecision(1) << e.time_ms << " ms, " << e.iterations
+            << " iterations)";
       err << "\n";
     } else if (live) {
-      err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones << "  solver calls "
-          << solver_calls << "   " << std::flush;
+      err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones
+          << "  solver calls " << solver_calls << "   " << std::flush;
     }
   };
   {
@@ -160,35 +170,41 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   const SearchResult& result = *planned.result;
   if (options.stats) print_search_stats(result, events, out);
   const bool found = result.status == PlanStatus::Found;
-  const int written = found ? write_certified_plan(result.plan, scenario, options.out, options.partial, err)
-                            : kExitFailed;
+  const int written =
+      found ? write_certified_plan(result.plan, scenario, options.out, options.partial, err)
+            : kExitFailed;
   if (written == kExitSuccess) {
-    out << "wrote " << options.out << ": " << result.plan.steps.size() << " steps, " << result.nodes_expanded
-        << " nodes expanded, " << result.solver_calls << " solver calls, " << std::fixed << std::setprecision(2)
-        << result.wall_time_s << " s\n";
+    out << "wrote " << options.out << ": " << result.plan.steps.size() << " steps, "
+        << result.nodes_expanded << " nodes expanded, " << result.solver_calls << " solver calls, "
+        << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
   }
   if (snapshots) {  // the backlog, if the writer fell behind, is drawn now
     const SnapshotStats stats = snapshots->finish();
-    out << "snapshots: " << stats.images << " images of " << stats.events << " search events in " << options.snapshots
-        << " (index " << SnapshotWriter::kIndexFile << ")\n";
+    out << "snapshots: " << stats.images << " images of " << stats.events << " search events in "
+        << options.snapshots << " (index " << SnapshotWriter::kIndexFile << ")\n";
     if (options.stats) print_snapshot_stats(stats, options.snapshots, out);
-    if (written == kExitSuccess) render_final_sequence(scenario, result.plan, options.snapshots, out, err);
+    if (written == kExitSuccess)
+      render_final_sequence(scenario, result.plan, options.snapshots, out, err);
   }
   planned.code = kExitFailed;
   if (found && written != kExitSuccess) return planned;  // why: on err (write_certified_plan)
   if (!found) {
-    err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message << "\n";
+    err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message
+        << "\n";
     if (result.closest_node >= 0)
-      err << "  closest stance to the goal: " << describe(scenario.scene, result.tree[result.closest_node].stance()) << "\n";
-    err << "  goal stance: " << describe(scenario.scene, scenario.stance(scenario.goal_stance)) << "\n";
-    err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls << " solver calls, "
-        << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
+      err << "  closest stance to the goal: "
+          << describe(scenario.scene, result.tree[result.closest_node].stance()) << "\n";
+    err << "  goal stance: " << describe(scenario.scene, scenario.stance(scenario.goal_stance))
+        << "\n";
+    err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls
+        << " solver calls, " << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
     if (options.partial) write_partial_plan(result, scenario, options.out, err);
     return planned;
   }
   if (options.stats)
     out << "stats: total " << std::fixed << std::setprecision(3)
-        << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() << " s\n";
+        << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
+        << " s\n";
   planned.code = kExitSuccess;
   return planned;
 }

@@ -37,8 +37,8 @@ int write_certified_plan(Plan plan, const Scenario& scenario, const std::string&
   }
   const int first = report.first_failed_step;
   err << "stanceplan: the plan fails certification"
-      << (first >= 0 ? " from step " + std::to_string(first) : std::string()) << "; "
-      << path << " not written\n";
+      << (first >= 0 ? " from step " + std::to_string(first) : std::string()) << "; " << path
+      << " not written\n";
   if (!partial || first <= 0) return kExitFailed;
   const std::string why = "certification failed from step " + std::to_string(first) + " (" +
                           describe(*report.first_failure()) + ")";

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "planner/certify/certify.h"
-#include "planner/plan/plan.h"
 #include "planner/io/scenario.h"
+#include "planner/plan/plan.h"
 
 namespace stanceplan::app {
 

@@ -106,8 +106,8 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
   if (plan.plan.steps.empty())
     throw InputError(options.plan + ": steps: the plan has no step to render");
   const render::PlanView view = plan_view(plan);
-  render_figures(view, sequence_options(options, view), {options.out_dir, options.strip, options.gif},
-                 out, err);
+  render_figures(view, sequence_options(options, view),
+                 {options.out_dir, options.strip, options.gif}, out, err);
   return 0;
 }
 

@@ -24,7 +24,7 @@ class PlanSession {
   // Makes the solver worker processes at once, on the calling thread (before the caller starts
   // other threads: solver_pool.h); the scenario outlives the session.
   PlanSession(const Scenario& scenario, SearchOptions options);
-  ~PlanSession();                                                // cancels and joins
+  ~PlanSession();  // cancels and joins
   PlanSession(const PlanSession&) = delete;
   PlanSession& operator=(const PlanSession&) = delete;
 

@@ -28,7 +28,8 @@ class Checker {
 
   CertifyReport run() {
     const auto& steps = plan_.steps;
-    for (size_t i = 0; i < steps.size(); ++i) check_step(int(i), steps[i], i > 0 ? &steps[i - 1] : nullptr);
+    for (size_t i = 0; i < steps.size(); ++i)
+      check_step(int(i), steps[i], i > 0 ? &steps[i - 1] : nullptr);
     if (steps.empty()) note("sequence", "", 1.0, 0.0, -1, "the plan has no step");
     CertifyReport report;  // the checks that applied, in a fixed order
     for (const char* name : kOrder)
@@ -38,15 +39,17 @@ class Checker {
   }
 
  private:
-  static constexpr const char* kOrder[] = {"sequence", "contact plane", "contact polygon", "contact normals",
-                                           "force points", "equilibrium force", "equilibrium moment",
-                                           "unilateral", "friction", "joint limits", "torque limits",
-                                           "torque consistency", "quaternion norm", "interpenetration"};
+  static constexpr const char* kOrder[] = {
+      "sequence",        "contact plane",     "contact polygon",    "contact normals",
+      "force points",    "equilibrium force", "equilibrium moment", "unilateral",
+      "friction",        "joint limits",      "torque limits",      "torque consistency",
+      "quaternion norm", "interpenetration"};
 
   // Keeps the worst violation of each check, with its step and what it was.
-  void note(const std::string& name, const std::string& unit, double violation, double tolerance, int step,
-            const std::string& detail) {
-    auto [it, inserted] = checks_.try_emplace(name, CheckResult{name, unit, 0.0, tolerance, step, ""});
+  void note(const std::string& name, const std::string& unit, double violation, double tolerance,
+            int step, const std::string& detail) {
+    auto [it, inserted] =
+        checks_.try_emplace(name, CheckResult{name, unit, 0.0, tolerance, step, ""});
     CheckResult& c = it->second;
     if (step >= 0 && !(violation <= tolerance) &&
         (first_failed_step_ < 0 || step < first_failed_step_))
@@ -81,16 +84,21 @@ class Checker {
     if (!step.changed) return bad("no changed_contact");
     const Contact& c = *step.changed;
     if (step.action == "add") {
-      if (before.find(c) >= 0 || after.find(c) < 0 || after.size() != before.size() + 1 || !(after.without(after.find(c)) == before))
-        bad("stance " + std::to_string(i) + " is not stance " + std::to_string(i - 1) + " plus " + id(c.s1) + "-" + id(c.s2));
-      if (!(touched_stance == after) || !(loaded_stance == before)) bad("an add step must touch sigma_i and load sigma_{i-1}");
+      if (before.find(c) >= 0 || after.find(c) < 0 || after.size() != before.size() + 1 ||
+          !(after.without(after.find(c)) == before))
+        bad("stance " + std::to_string(i) + " is not stance " + std::to_string(i - 1) + " plus " +
+            id(c.s1) + "-" + id(c.s2));
+      if (!(touched_stance == after) || !(loaded_stance == before))
+        bad("an add step must touch sigma_i and load sigma_{i-1}");
     } else if (step.action == "remove") {
       const int k = before.find(c);
       if (k < 0 || after.find(c) >= 0 || !(before.without(k) == after))
-        bad("stance " + std::to_string(i) + " is not stance " + std::to_string(i - 1) + " minus " + id(c.s1) + "-" + id(c.s2));
+        bad("stance " + std::to_string(i) + " is not stance " + std::to_string(i - 1) + " minus " +
+            id(c.s1) + "-" + id(c.s2));
       else if (before.contacts()[k].fixed)
         bad("the fixed contact " + id(c.s1) + "-" + id(c.s2) + " is removed");
-      if (!(touched_stance == before) || !(loaded_stance == after)) bad("a remove step must touch sigma_{i-1} and load sigma_i");
+      if (!(touched_stance == before) || !(loaded_stance == after))
+        bad("a remove step must touch sigma_{i-1} and load sigma_i");
     } else {
       bad("action \"" + step.action + "\" after step 0");
     }
@@ -105,14 +113,18 @@ class Checker {
       const Eigen::Isometry3d T1 = data_[c.s1.entity].T_WL[s1.link] * s1.T_LS;
       const Eigen::Isometry3d T2 = data_[c.s2.entity].T_WL[s2.link] * s2.T_LS;
       const std::string name = id(c.s1) + " on " + id(c.s2);
-      const double angle = std::acos(std::clamp(-T1.linear().col(2).dot(T2.linear().col(2)), -1.0, 1.0));
+      const double angle =
+          std::acos(std::clamp(-T1.linear().col(2).dot(T2.linear().col(2)), -1.0, 1.0));
       note("contact normals", "rad", angle, kNormalTol, i, name);
       const auto& poly = s2.vertices_S;
       for (int v = 0; v < int(s1.vertices_S.size()); ++v) {
-        const Eigen::Vector3d p_S2 = T2.inverse() * (T1 * Eigen::Vector3d(s1.vertices_S[v].x(), s1.vertices_S[v].y(), 0.0));
-        note("contact plane", "m", std::abs(p_S2.z()), kDistanceTol, i, name + ", vertex " + std::to_string(v));
+        const Eigen::Vector3d p_S2 =
+            T2.inverse() * (T1 * Eigen::Vector3d(s1.vertices_S[v].x(), s1.vertices_S[v].y(), 0.0));
+        note("contact plane", "m", std::abs(p_S2.z()), kDistanceTol, i,
+             name + ", vertex " + std::to_string(v));
         const double outside = std::max(0.0, distance_outside(poly, p_S2.head<2>()));
-        note("contact polygon", "m", outside, kDistanceTol, i, name + ", vertex " + std::to_string(v));
+        note("contact polygon", "m", outside, kDistanceTol, i,
+             name + ", vertex " + std::to_string(v));
       }
     }
   }
@@ -122,19 +134,23 @@ class Checker {
     for (const VertexForce& f : step.forces) {
       const PlanContact& pc = step.contacts[f.contact];
       const std::string name = id(pc.contact.s1) + " on " + id(pc.contact.s2);
-      if (!pc.loaded) note("force points", "m", 1.0, kDistanceTol, i, name + " carries force but is not loaded");
+      if (!pc.loaded)
+        note("force points", "m", 1.0, kDistanceTol, i, name + " carries force but is not loaded");
       const Surface& s1 = scene_.surfaces.get(pc.contact.s1);
       double nearest = INFINITY;
       for (const Eigen::Vector3d& v : s1.vertices_L())
-        nearest = std::min(nearest, (data_[pc.contact.s1.entity].T_WL[s1.link] * v - f.point_W).norm());
-      note("force points", "m", nearest, kDistanceTol, i, name + ": no vertex of s1 at the force's point");
+        nearest =
+            std::min(nearest, (data_[pc.contact.s1.entity].T_WL[s1.link] * v - f.point_W).norm());
+      note("force points", "m", nearest, kDistanceTol, i,
+           name + ": no vertex of s1 at the force's point");
       if (pc.contact.bilateral) continue;
       const Surface& s2 = scene_.surfaces.get(pc.contact.s2);
       const Eigen::Vector3d n = data_[pc.contact.s2.entity].T_WL[s2.link].linear() * s2.normal_L();
       const double fn = f.force_W.dot(n);
       const double ft = (f.force_W - fn * n).norm();
       note("unilateral", "N", std::max(0.0, -fn), kFrictionTol, i, name);
-      note("friction", "N", std::max(0.0, ft - friction_ * fn - 1e-6 * f.force_W.norm()), kFrictionTol, i, name);
+      note("friction", "N", std::max(0.0, ft - friction_ * fn - 1e-6 * f.force_W.norm()),
+           kFrictionTol, i, name);
     }
   }
 
@@ -163,18 +179,21 @@ class Checker {
       const Entity& entity = system_.entity(e);
       const Model& model = *entity.model;
       if (entity.floating())
-        note("quaternion norm", "", std::abs(step.q.segment<4>(system_.offset(e) + 3).norm() - 1.0), 1e-6, i, entity.name);
+        note("quaternion norm", "", std::abs(step.q.segment<4>(system_.offset(e) + 3).norm() - 1.0),
+             1e-6, i, entity.name);
       if (model.num_dofs() == 0) continue;
       const int first = system_.offset(e) + entity.first_dof();
       for (int k = 0; k < model.num_dofs(); ++k) {
         const Joint& joint = model.joints[model.dof_joints[k]];
         if (!joint.has_position_limits) continue;
         const double v = step.q[first + k];
-        note("joint limits", "rad|m", std::max({0.0, joint.lower - v, v - joint.upper}), kLimitTol, i, entity.name + "/" + joint.name);
+        note("joint limits", "rad|m", std::max({0.0, joint.lower - v, v - joint.upper}), kLimitTol,
+             i, entity.name + "/" + joint.name);
       }
       if (entity.kind == EntityKind::Object) continue;
       if (e >= int(step.torques.size()) || step.torques[e].size() != model.num_dofs()) {
-        note("torque consistency", "N m", INFINITY, kTorqueTol, i, entity.name + ": no torques in the plan");
+        note("torque consistency", "N m", INFINITY, kTorqueTol, i,
+             entity.name + ": no torques in the plan");
         continue;
       }
       const Eigen::VectorXd implied = implied_torques(e, step);
@@ -182,8 +201,10 @@ class Checker {
         const Joint& joint = model.joints[model.dof_joints[k]];
         const double tau = step.torques[e][k];
         if (joint.effort > 0.0)
-          note("torque limits", "x effort", std::max(0.0, std::abs(tau) / joint.effort - 1.0), 1e-6, i, entity.name + "/" + joint.name);
-        note("torque consistency", "N m", std::abs(tau - implied[k]), kTorqueTol, i, entity.name + "/" + joint.name);
+          note("torque limits", "x effort", std::max(0.0, std::abs(tau) / joint.effort - 1.0), 1e-6,
+               i, entity.name + "/" + joint.name);
+        note("torque consistency", "N m", std::abs(tau - implied[k]), kTorqueTol, i,
+             entity.name + "/" + joint.name);
       }
     }
   }
@@ -217,7 +238,8 @@ class Checker {
       const CollisionLink& b = model.links()[model.pairs()[p].b];
       bool touching = false;
       for (const PlanContact& pc : step.contacts) {
-        const int la = scene_.surfaces.get(pc.contact.s1).link, lb = scene_.surfaces.get(pc.contact.s2).link;
+        const int la = scene_.surfaces.get(pc.contact.s1).link,
+                  lb = scene_.surfaces.get(pc.contact.s2).link;
         const int ea = pc.contact.s1.entity, eb = pc.contact.s2.entity;
         if ((a.entity == ea && a.link == la && b.entity == eb && b.link == lb) ||
             (a.entity == eb && a.link == lb && b.entity == ea && b.link == la))
@@ -226,9 +248,11 @@ class Checker {
       if (touching) continue;
       const double d = signed_distance(model, work, p).distance;
       const auto name = [&](const CollisionLink& l) {
-        return system_.entity(l.entity).name + "/" + system_.entity(l.entity).model->links[l.link].name;
+        return system_.entity(l.entity).name + "/" +
+               system_.entity(l.entity).model->links[l.link].name;
       };
-      note("interpenetration", "m", std::max(0.0, -d), kPenetrationTol, i, name(a) + " and " + name(b));
+      note("interpenetration", "m", std::max(0.0, -d), kPenetrationTol, i,
+           name(a) + " and " + name(b));
     }
   }
 
@@ -261,7 +285,9 @@ CertifyReport certify(const Scene& scene, double friction, const Plan& plan) {
   return Checker(scene, friction, plan).run();
 }
 
-CertifyReport certify(const LoadedPlan& plan) { return certify(plan.scene, plan.friction, plan.plan); }
+CertifyReport certify(const LoadedPlan& plan) {
+  return certify(plan.scene, plan.friction, plan.plan);
+}
 
 const CheckResult* CertifyReport::first_failure() const {
   for (const CheckResult& c : checks)

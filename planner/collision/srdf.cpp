@@ -2,7 +2,6 @@
 
 #include <tinyxml.h>
 
-
 #include "planner/util/input_error.h"
 #include "planner/util/text_file.h"
 

@@ -48,8 +48,8 @@ class Stance {
   bool uses_surface(SurfaceRef ref) const;
   // Index of the contact joining the same surfaces as c, or -1.
   int find(const Contact& c) const;
-  Stance with(const Contact& c) const;     // adds c
-  Stance without(int index) const;         // removes contacts()[index]
+  Stance with(const Contact& c) const;  // adds c
+  Stance without(int index) const;      // removes contacts()[index]
   bool operator==(const Stance& other) const = default;
   size_t hash() const;
 

@@ -5,7 +5,9 @@
 namespace stanceplan {
 namespace {
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 // Default surface x axis: the first link axis not nearly parallel to the normal, projected.
 Eigen::Vector3d default_x_axis(const Eigen::Vector3d& n) {
@@ -16,7 +18,9 @@ Eigen::Vector3d default_x_axis(const Eigen::Vector3d& n) {
   return Eigen::Vector3d::UnitX();  // unreachable for a unit n
 }
 
-std::string vertex_label(int i) { return "vertex " + std::to_string(i); }
+std::string vertex_label(int i) {
+  return "vertex " + std::to_string(i);
+}
 
 // Strictly convex and counter-clockwise: every turn is a left turn and the turns add up to one
 // full revolution (which rules out self-intersecting stars whose turns all have one sign).
@@ -36,8 +40,9 @@ bool check_convex_ccw(const std::vector<Eigen::Vector2d>& v, std::string* error)
   double signed_area = 0.0;
   for (int i = 0; i < n; ++i) signed_area += cross2(v[i], v[(i + 1) % n]);
   if (signed_area < 0.0) {
-    *error = "the vertices are clockwise about the outward normal (expected counter-clockwise: "
-             "reverse their order or flip the normal)";
+    *error =
+        "the vertices are clockwise about the outward normal (expected counter-clockwise: "
+        "reverse their order or flip the normal)";
     return false;
   }
   double total_turn = 0.0;
@@ -125,7 +130,8 @@ bool make_surface(const std::string& name, int link, const std::string& link_nam
   if (std::abs(worst_offset) > plane_tolerance) {
     *error = "not planar: " + vertex_label(worst) + " is " + std::to_string(worst_offset) +
              " m off the plane through the vertex centroid normal to the given normal "
-             "(tolerance " + std::to_string(plane_tolerance) + " m)";
+             "(tolerance " +
+             std::to_string(plane_tolerance) + " m)";
     return false;
   }
   Eigen::Vector3d x = default_x_axis(z);
@@ -146,7 +152,8 @@ bool make_surface(const std::string& name, int link, const std::string& link_nam
   out.T_LS.linear().col(1) = y;
   out.T_LS.linear().col(2) = z;
   out.T_LS.translation() = center;
-  for (const auto& v : vertices_L) out.vertices_S.emplace_back((v - center).dot(x), (v - center).dot(y));
+  for (const auto& v : vertices_L)
+    out.vertices_S.emplace_back((v - center).dot(x), (v - center).dot(y));
   if (!check_convex_ccw(out.vertices_S, error)) return false;
   *surface = std::move(out);
   return true;

@@ -9,8 +9,8 @@
 namespace stanceplan {
 
 struct Surface {
-  std::string name;       // unique within its model, e.g. "l_sole"
-  int link = -1;          // index into Model::links
+  std::string name;  // unique within its model, e.g. "l_sole"
+  int link = -1;     // index into Model::links
   std::string link_name;
   // Surface frame in the link frame: origin O_s, columns x_s, y_s, z_s (z_s = outward normal).
   Eigen::Isometry3d T_LS = Eigen::Isometry3d::Identity();

@@ -23,7 +23,8 @@ class SurfaceFileReader {
     try {
       root = YAML::Load(read_text_file(path_));
     } catch (const YAML::Exception& e) {
-      throw InputError(path_ + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
+      throw InputError(path_ + ":" + std::to_string(e.mark.line + 1) +
+                       ": not valid YAML: " + e.msg);
     }
     if (!root.IsMap()) fail(root, "", "expected a mapping with \"format\" and \"surfaces\"");
     const YAML::Node format = root["format"];
@@ -48,7 +49,8 @@ class SurfaceFileReader {
   [[noreturn]] void fail(const YAML::Node& node, const std::string& where,
                          const std::string& what) const {
     std::string message = path_;
-    if (node.IsDefined() && node.Mark().line >= 0) message += ":" + std::to_string(node.Mark().line + 1);
+    if (node.IsDefined() && node.Mark().line >= 0)
+      message += ":" + std::to_string(node.Mark().line + 1);
     message += ": " + (where.empty() ? "" : where + ": ") + what;
     throw InputError(message);
   }
@@ -56,7 +58,8 @@ class SurfaceFileReader {
   Eigen::Vector3d read_vector(const YAML::Node& parent, const std::string& key,
                               const std::string& where) const {
     const YAML::Node node = parent[key];
-    if (!node.IsSequence() || node.size() != 3) fail(node ? node : parent, where, key + ": expected [x, y, z]");
+    if (!node.IsSequence() || node.size() != 3)
+      fail(node ? node : parent, where, key + ": expected [x, y, z]");
     Eigen::Vector3d v;
     for (int k = 0; k < 3; ++k) v[k] = read_number(node[k], where + ": " + key);
     return v;
@@ -67,9 +70,11 @@ class SurfaceFileReader {
     try {
       value = node.as<double>();
     } catch (const YAML::Exception&) {
-      fail(node, where, "expected a number" + (node.IsScalar() ? ", found \"" + node.Scalar() + "\"" : ""));
+      fail(node, where,
+           "expected a number" + (node.IsScalar() ? ", found \"" + node.Scalar() + "\"" : ""));
     }
-    if (!std::isfinite(value)) fail(node, where, "expected a finite number, found \"" + node.Scalar() + "\"");
+    if (!std::isfinite(value))
+      fail(node, where, "expected a finite number, found \"" + node.Scalar() + "\"");
     return value;
   }
 
@@ -92,9 +97,11 @@ class SurfaceFileReader {
       const YAML::Node v = node["vertices"][i];
       if (!v.IsSequence() || v.size() != 3)
         fail(v, where, "vertices[" + std::to_string(i) + "]: expected [x, y, z]");
-      vertices.emplace_back(read_number(v[0], where), read_number(v[1], where), read_number(v[2], where));
+      vertices.emplace_back(read_number(v[0], where), read_number(v[1], where),
+                            read_number(v[2], where));
     }
-    if (!node["normal"]) fail(node, where, "normal: missing (the outward normal in the link frame)");
+    if (!node["normal"])
+      fail(node, where, "normal: missing (the outward normal in the link frame)");
     const Eigen::Vector3d normal = read_vector(node, "normal", where);
     Eigen::Vector3d x_axis;
     const bool has_x = static_cast<bool>(node["x_axis"]);
@@ -109,13 +116,15 @@ class SurfaceFileReader {
 
   Surface read_box_face(const YAML::Node& node, const std::string& where, const std::string& name,
                         int link) {
-    if (!node["box_face"].IsScalar()) fail(node["box_face"], where, "box_face: expected one of +x -x +y -y +z -z");
+    if (!node["box_face"].IsScalar())
+      fail(node["box_face"], where, "box_face: expected one of +x -x +y -y +z -z");
     const std::string face = node["box_face"].Scalar();
     int box_index = 0;
     if (node["box_index"]) {
       const double index = read_number(node["box_index"], where + ": box_index");
       if (index != std::floor(index) || index < 0 || index > 1e6)
-        fail(node["box_index"], where, "box_index: expected a whole number >= 0, found " + node["box_index"].Scalar());
+        fail(node["box_index"], where,
+             "box_index: expected a whole number >= 0, found " + node["box_index"].Scalar());
       box_index = static_cast<int>(index);
     }
     const double inset = node["inset"] ? read_number(node["inset"], where + ": inset") : 0.0;
@@ -151,10 +160,12 @@ Surface surface_from_box_face(const Model& model, int link, int box_index, const
     if (g.shape.type == ShapeType::Box && seen++ == box_index) box = &g;
   if (!box)
     throw InputError("link \"" + l.name + "\" has " + std::to_string(seen) +
-                     " collision box(es), box_index " + std::to_string(box_index) + " does not exist");
+                     " collision box(es), box_index " + std::to_string(box_index) +
+                     " does not exist");
   const int axis = face_index / 2;
   const double sign = face_index % 2 == 0 ? 1.0 : -1.0;
-  // (u, v, sign * axis) right-handed, so corners listed (+,+) (-,+) (-,-) (+,-) are counter-clockwise.
+  // (u, v, sign * axis) right-handed, so corners listed (+,+) (-,+) (-,-) (+,-) are
+  // counter-clockwise.
   int u = (axis + 1) % 3, v = (axis + 2) % 3;
   if (sign < 0) std::swap(u, v);
   const Eigen::Vector3d half = 0.5 * box->shape.size;

@@ -21,7 +21,9 @@ class SurfaceSet {
   SurfaceSet() = default;
   explicit SurfaceSet(int num_entities) : surfaces_(num_entities) {}
 
-  void set(int entity, std::vector<Surface> surfaces) { surfaces_.at(entity) = std::move(surfaces); }
+  void set(int entity, std::vector<Surface> surfaces) {
+    surfaces_.at(entity) = std::move(surfaces);
+  }
   const std::vector<Surface>& of(int entity) const { return surfaces_.at(entity); }
   const Surface& get(SurfaceRef ref) const { return surfaces_.at(ref.entity).at(ref.index); }
   int num_entities() const { return static_cast<int>(surfaces_.size()); }

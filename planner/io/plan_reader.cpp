@@ -16,7 +16,8 @@ using nlohmann::json;
 
 class PlanReader {
  public:
-  PlanReader(const std::string& path, const PlanReadOptions& options) : path_(path), options_(options) {
+  PlanReader(const std::string& path, const PlanReadOptions& options)
+      : path_(path), options_(options) {
     dir_ = fs::absolute(fs::path(path)).parent_path();
   }
 
@@ -26,9 +27,13 @@ class PlanReader {
     out.file = path_;
     object(root, "");
     if (string(root, "format", "") != "stanceplan/plan@1")
-      fail("format", "expected \"stanceplan/plan@1\", found \"" + string(root, "format", "") + "\"");
-    if (root.contains("partial")) out.plan.partial = string(member(root, "partial", ""), "reason", "partial");
-    out.scenario = root.contains("scenario") && root["scenario"].is_string() ? root["scenario"].get<std::string>() : "";
+      fail("format",
+           "expected \"stanceplan/plan@1\", found \"" + string(root, "format", "") + "\"");
+    if (root.contains("partial"))
+      out.plan.partial = string(member(root, "partial", ""), "reason", "partial");
+    out.scenario = root.contains("scenario") && root["scenario"].is_string()
+                       ? root["scenario"].get<std::string>()
+                       : "";
     out.spec.gravity = vector3(member(root, "gravity", ""), "gravity");
     out.friction = number(member(root, "friction", ""), "friction");
     read_entities(member(root, "entities", ""), out.spec);
@@ -87,27 +92,33 @@ class PlanReader {
   }
 
   // Optional members (absent: the fallback); a member of the wrong type is an error, never ignored.
-  bool flag(const json& parent, const std::string& key, bool fallback, const std::string& field) const {
+  bool flag(const json& parent, const std::string& key, bool fallback,
+            const std::string& field) const {
     object(parent, field);
     if (!parent.contains(key)) return fallback;
-    if (!parent[key].is_boolean()) fail(field + "." + key, "expected true or false, found " + found(parent[key]));
+    if (!parent[key].is_boolean())
+      fail(field + "." + key, "expected true or false, found " + found(parent[key]));
     return parent[key].get<bool>();
   }
 
-  double optional_number(const json& parent, const std::string& key, double fallback, const std::string& field) const {
+  double optional_number(const json& parent, const std::string& key, double fallback,
+                         const std::string& field) const {
     return parent.contains(key) ? number(parent[key], field + "." + key) : fallback;
   }
 
-  int whole_number(const json& parent, const std::string& key, int fallback, const std::string& field) const {
+  int whole_number(const json& parent, const std::string& key, int fallback,
+                   const std::string& field) const {
     if (!parent.contains(key)) return fallback;
     const double d = number(parent[key], field + "." + key);
-    if (d != std::floor(d) || d < 0 || d > 1e9) fail(field + "." + key, "expected a whole number >= 0, found " + parent[key].dump());
+    if (d != std::floor(d) || d < 0 || d > 1e9)
+      fail(field + "." + key, "expected a whole number >= 0, found " + parent[key].dump());
     return static_cast<int>(d);
   }
 
   std::string string(const json& parent, const std::string& key, const std::string& field) const {
     const json& v = member(parent, key, field);
-    if (!v.is_string()) fail(field.empty() ? key : field + "." + key, "expected a string, found " + found(v));
+    if (!v.is_string())
+      fail(field.empty() ? key : field + "." + key, "expected a string, found " + found(v));
     return v.get<std::string>();
   }
 
@@ -136,10 +147,13 @@ class PlanReader {
       EntitySpec out;
       out.name = string(e, "name", f);
       const std::string kind = string(e, "kind", f);
-      if (!parse_entity_kind(kind, &out.kind)) fail(f + ".kind", "expected floating, fixed, object or environment, found \"" + kind + "\"");
+      if (!parse_entity_kind(kind, &out.kind))
+        fail(f + ".kind",
+             "expected floating, fixed, object or environment, found \"" + kind + "\"");
       out.urdf = path_of(string(e, "urdf", f));
       if (e.contains("package_paths")) {
-        if (!e["package_paths"].is_array()) fail(f + ".package_paths", "expected an array of folders");
+        if (!e["package_paths"].is_array())
+          fail(f + ".package_paths", "expected an array of folders");
         for (const json& p : e["package_paths"]) {
           if (!p.is_string()) fail(f + ".package_paths", "expected an array of folders");
           out.package_paths.push_back(path_of(p.get<std::string>()));
@@ -147,11 +161,14 @@ class PlanReader {
       }
       if (e.contains("base_pose")) {
         const json& pose = e["base_pose"];
-        out.T_WB.translation() = vector3(member(pose, "position", f + ".base_pose"), f + ".base_pose.position");
+        out.T_WB.translation() =
+            vector3(member(pose, "position", f + ".base_pose"), f + ".base_pose.position");
         const json& q = member(pose, "orientation_wxyz", f + ".base_pose");
-        if (!q.is_array() || q.size() != 4) fail(f + ".base_pose.orientation_wxyz", "expected [w, x, y, z]");
+        if (!q.is_array() || q.size() != 4)
+          fail(f + ".base_pose.orientation_wxyz", "expected [w, x, y, z]");
         Eigen::Quaterniond quat(number(q[0], f), number(q[1], f), number(q[2], f), number(q[3], f));
-        if (quat.norm() < 1e-9) fail(f + ".base_pose.orientation_wxyz", "a zero quaternion is no orientation");
+        if (quat.norm() < 1e-9)
+          fail(f + ".base_pose.orientation_wxyz", "a zero quaternion is no orientation");
         out.T_WB.linear() = quat.normalized().toRotationMatrix();
       }
       spec.entities.push_back(out);
@@ -161,10 +178,12 @@ class PlanReader {
   void read_ignored(const json& root, LoadedPlan& out) const {
     if (!root.contains("collision_pairs_ignored")) return;
     const json& list = root["collision_pairs_ignored"];
-    if (!list.is_array()) fail("collision_pairs_ignored", "expected an array of [entity/link, entity/link]");
+    if (!list.is_array())
+      fail("collision_pairs_ignored", "expected an array of [entity/link, entity/link]");
     for (size_t i = 0; i < list.size(); ++i) {
       const std::string f = "collision_pairs_ignored[" + std::to_string(i) + "]";
-      if (!list[i].is_array() || list[i].size() < 2 || !list[i][0].is_string() || !list[i][1].is_string())
+      if (!list[i].is_array() || list[i].size() < 2 || !list[i][0].is_string() ||
+          !list[i][1].is_string())
         fail(f, "expected [entity/link, entity/link]");
       LinkName names[2];
       for (int k = 0; k < 2; ++k) {
@@ -187,28 +206,36 @@ class PlanReader {
       const std::string entity_name = string(s, "entity", f);
       const int e = scene.system.find_entity(entity_name);
       if (e < 0) fail(f + ".entity", "no entity \"" + entity_name + "\"");
-      if (id.rfind(entity_name + "/", 0) != 0) fail(f + ".id", "\"" + id + "\" does not start with \"" + entity_name + "/\"");
+      if (id.rfind(entity_name + "/", 0) != 0)
+        fail(f + ".id", "\"" + id + "\" does not start with \"" + entity_name + "/\"");
       const std::string link_name = string(s, "link", f);
       const int link = scene.system.entity(e).model->find_link(link_name);
-      if (link < 0) fail(f + ".link", "model \"" + scene.system.entity(e).model->name + "\" has no link \"" + link_name + "\"");
+      if (link < 0)
+        fail(f + ".link", "model \"" + scene.system.entity(e).model->name + "\" has no link \"" +
+                              link_name + "\"");
       const json& rotation = member(s, "rotation", f);
-      if (!rotation.is_array() || rotation.size() != 3) fail(f + ".rotation", "expected a 3x3 array of rows");
+      if (!rotation.is_array() || rotation.size() != 3)
+        fail(f + ".rotation", "expected a 3x3 array of rows");
       Eigen::Matrix3d R;
-      for (int r = 0; r < 3; ++r) R.row(r) = vector3(rotation[r], f + ".rotation[" + std::to_string(r) + "]");
+      for (int r = 0; r < 3; ++r)
+        R.row(r) = vector3(rotation[r], f + ".rotation[" + std::to_string(r) + "]");
       const json& vertices = member(s, "vertices", f);
       if (!vertices.is_array()) fail(f + ".vertices", "expected an array of [x, y, z]");
       std::vector<Eigen::Vector3d> v;
-      for (size_t k = 0; k < vertices.size(); ++k) v.push_back(vector3(vertices[k], f + ".vertices[" + std::to_string(k) + "]"));
+      for (size_t k = 0; k < vertices.size(); ++k)
+        v.push_back(vector3(vertices[k], f + ".vertices[" + std::to_string(k) + "]"));
       Surface surface;
       std::string error;
       const Eigen::Vector3d x_axis = R.col(0), normal = R.col(2);
       // 1e-6 m: the plan writes vertices at full precision.
-      if (!make_surface(id.substr(entity_name.size() + 1), link, link_name, v, normal, &x_axis, &surface, &error, 1e-6))
+      if (!make_surface(id.substr(entity_name.size() + 1), link, link_name, v, normal, &x_axis,
+                        &surface, &error, 1e-6))
         fail(f, error);
       per_entity[e].push_back(surface);
     }
     scene.surfaces = SurfaceSet(scene.system.num_entities());
-    for (int e = 0; e < scene.system.num_entities(); ++e) scene.surfaces.set(e, std::move(per_entity[e]));
+    for (int e = 0; e < scene.system.num_entities(); ++e)
+      scene.surfaces.set(e, std::move(per_entity[e]));
   }
 
   SurfaceRef surface_ref(const json& v, const std::string& field, const Scene& scene) const {
@@ -237,8 +264,10 @@ class PlanReader {
       if (entity.floating()) {
         q.segment<3>(offset) = vector3(member(ec, "base_position", f), f + ".base_position");
         const json& quat = member(ec, "base_orientation_wxyz", f);
-        if (!quat.is_array() || quat.size() != 4) fail(f + ".base_orientation_wxyz", "expected [w, x, y, z]");
-        for (int k = 0; k < 4; ++k) q[offset + 3 + k] = number(quat[k], f + ".base_orientation_wxyz");
+        if (!quat.is_array() || quat.size() != 4)
+          fail(f + ".base_orientation_wxyz", "expected [w, x, y, z]");
+        for (int k = 0; k < 4; ++k)
+          q[offset + 3 + k] = number(quat[k], f + ".base_orientation_wxyz");
       }
       const Model& model = *entity.model;
       const json& joints = model.num_dofs() > 0 ? member(ec, "joints", f) : json::object();

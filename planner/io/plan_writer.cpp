@@ -12,7 +12,9 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+json vec(const Eigen::Vector3d& v) {
+  return json::array({v.x(), v.y(), v.z()});
+}
 
 std::string relative_to(const std::string& path, const fs::path& base) {
   const fs::path absolute = fs::absolute(path).lexically_normal();
@@ -22,7 +24,8 @@ std::string relative_to(const std::string& path, const fs::path& base) {
 
 json entity_json(const Scenario& s, int e, const fs::path& base) {
   const EntitySpec& spec = s.spec.entities[e];
-  json out = {{"name", spec.name}, {"kind", to_string(spec.kind)}, {"urdf", relative_to(spec.urdf, base)}};
+  json out = {
+      {"name", spec.name}, {"kind", to_string(spec.kind)}, {"urdf", relative_to(spec.urdf, base)}};
   json packages = json::array();
   for (const std::string& p : spec.package_paths) packages.push_back(relative_to(p, base));
   out["package_paths"] = packages;
@@ -51,7 +54,8 @@ json surface_json(const Scene& scene, SurfaceRef ref) {
 }
 
 json pair_json(const Scene& scene, const Contact& c) {
-  return {{"s1", scene.surfaces.id(scene.system, c.s1)}, {"s2", scene.surfaces.id(scene.system, c.s2)}};
+  return {{"s1", scene.surfaces.id(scene.system, c.s1)},
+          {"s2", scene.surfaces.id(scene.system, c.s2)}};
 }
 
 json configuration_json(const Scene& scene, const Eigen::VectorXd& q) {
@@ -68,7 +72,8 @@ json configuration_json(const Scene& scene, const Eigen::VectorXd& q) {
     }
     json joints = json::object();
     const Model& model = *entity.model;
-    for (int k = 0; k < model.num_dofs(); ++k) joints[model.joints[model.dof_joints[k]].name] = q[offset + entity.first_dof() + k];
+    for (int k = 0; k < model.num_dofs(); ++k)
+      joints[model.joints[model.dof_joints[k]].name] = q[offset + entity.first_dof() + k];
     c["joints"] = joints;
     out[entity.name] = c;
   }
@@ -98,7 +103,8 @@ json step_json(const Scene& scene, const PlanStep& step, int index) {
     const Model& model = *scene.system.entity(e).model;
     if (model.num_dofs() == 0 || e >= int(step.torques.size())) continue;
     json t = json::object();
-    for (int k = 0; k < model.num_dofs(); ++k) t[model.joints[model.dof_joints[k]].name] = step.torques[e][k];
+    for (int k = 0; k < model.num_dofs(); ++k)
+      t[model.joints[model.dof_joints[k]].name] = step.torques[e][k];
     torques[scene.system.entity(e).name] = t;
   }
   return {{"index", index},
@@ -109,8 +115,11 @@ json step_json(const Scene& scene, const PlanStep& step, int index) {
           {"configuration", configuration_json(scene, step.q)},
           {"forces", forces},
           {"torques", torques},
-          {"solver", {{"status", to_string(step.status)}, {"iterations", step.iterations},
-                      {"time_ms", step.time_ms}, {"objective", step.objective}}}};
+          {"solver",
+           {{"status", to_string(step.status)},
+            {"iterations", step.iterations},
+            {"time_ms", step.time_ms},
+            {"objective", step.objective}}}};
 }
 
 json ignored_pairs_json(const Scene& scene) {
@@ -118,7 +127,8 @@ json ignored_pairs_json(const Scene& scene) {
   if (!scene.collision) return out;
   for (const ExcludedPair& p : scene.collision->excluded_pairs()) {
     const auto name = [&](int entity, int link) {
-      return scene.system.entity(entity).name + "/" + scene.system.entity(entity).model->links[link].name;
+      return scene.system.entity(entity).name + "/" +
+             scene.system.entity(entity).model->links[link].name;
     };
     out.push_back({name(p.entity_a, p.link_a), name(p.entity_b, p.link_b)});
   }
@@ -145,7 +155,8 @@ std::string plan_to_json(const Plan& plan, const Scenario& s, const std::string&
   out["friction"] = s.solver.friction;
   out["cone_generators"] = s.solver.cone_generators;
   json entities = json::array();
-  for (int e = 0; e < s.scene.system.num_entities(); ++e) entities.push_back(entity_json(s, e, base));
+  for (int e = 0; e < s.scene.system.num_entities(); ++e)
+    entities.push_back(entity_json(s, e, base));
   out["entities"] = entities;
   std::set<SurfaceRef> used;
   for (const PlanStep& step : plan.steps)
@@ -157,10 +168,13 @@ std::string plan_to_json(const Plan& plan, const Scenario& s, const std::string&
   out["collision_pairs_ignored"] = ignored_pairs_json(s.scene);
   out["collision_pairs_ignored_reasons"] = ignored_reasons_json(s.scene);
   json steps = json::array();
-  for (size_t i = 0; i < plan.steps.size(); ++i) steps.push_back(step_json(s.scene, plan.steps[i], int(i)));
+  for (size_t i = 0; i < plan.steps.size(); ++i)
+    steps.push_back(step_json(s.scene, plan.steps[i], int(i)));
   out["steps"] = steps;
-  out["stats"] = {{"nodes_expanded", plan.stats.nodes_expanded}, {"solver_calls", plan.stats.solver_calls},
-                  {"wall_time_s", plan.stats.wall_time_s}, {"threads", plan.stats.threads}};
+  out["stats"] = {{"nodes_expanded", plan.stats.nodes_expanded},
+                  {"solver_calls", plan.stats.solver_calls},
+                  {"wall_time_s", plan.stats.wall_time_s},
+                  {"threads", plan.stats.threads}};
   return out.dump(1);
 }
 

@@ -3,8 +3,8 @@
 // the plan file's folder.
 #include <string>
 
-#include "planner/plan/plan.h"
 #include "planner/io/scenario.h"
+#include "planner/plan/plan.h"
 
 namespace stanceplan {
 

@@ -27,29 +27,34 @@ class ScenarioReader {
     YAML::Node root = load();
     Scenario s;
     s.file = path_;
-    expect_keys(root, "", {"format", "name", "description", "entities", "stances", "guide", "physics",
-                           "weights", "collision", "search", "solver"});
+    expect_keys(root, "",
+                {"format", "name", "description", "entities", "stances", "guide", "physics",
+                 "weights", "collision", "search", "solver"});
     const YAML::Node format = root["format"];
     if (!format || !format.IsScalar() || format.Scalar() != kFormat)
       fail(format ? format : root, "format",
-           std::string("expected \"") + kFormat + "\"" + (format && format.IsScalar() ? ", found \"" + format.Scalar() + "\"" : ""));
+           std::string("expected \"") + kFormat + "\"" +
+               (format && format.IsScalar() ? ", found \"" + format.Scalar() + "\"" : ""));
     s.name = root["name"] ? text(root["name"], "name") : fs::path(path_).stem().string();
     s.description = root["description"] ? text(root["description"], "description") : "";
     read_physics(root["physics"], s);
     read_collision(root["collision"], s);
     const YAML::Node entities = require(root, "entities", "");
-    if (!entities.IsSequence() || entities.size() == 0) fail(entities, "entities", "expected a non-empty list");
+    if (!entities.IsSequence() || entities.size() == 0)
+      fail(entities, "entities", "expected a non-empty list");
     for (size_t i = 0; i < entities.size(); ++i)
       s.spec.entities.push_back(read_entity(entities[i], "entities[" + std::to_string(i) + "]"));
     s.scene = build_scene(s.spec);
     s.initial_configuration = s.scene.system.neutral_configuration();
     for (size_t i = 0; i < entities.size(); ++i)
       if (entities[i]["configuration"])
-        read_configuration(entities[i]["configuration"], "entities[" + std::to_string(i) + "].configuration",
-                           int(i), s.initial_configuration, s.scene);
+        read_configuration(entities[i]["configuration"],
+                           "entities[" + std::to_string(i) + "].configuration", int(i),
+                           s.initial_configuration, s.scene);
     const YAML::Node stances = require(root, "stances", "");
     expect_keys(stances, "stances", {"initial", "goal"});
-    s.initial_stance = read_stance(require(stances, "initial", "stances"), "stances.initial", s.scene);
+    s.initial_stance =
+        read_stance(require(stances, "initial", "stances"), "stances.initial", s.scene);
     s.goal_stance = read_stance(require(stances, "goal", "stances"), "stances.goal", s.scene);
     require_support(stances["initial"], "stances.initial", s.initial_stance, s);
     require_support(stances["goal"], "stances.goal", s.goal_stance, s);
@@ -65,13 +70,16 @@ class ScenarioReader {
     try {
       return YAML::Load(read_text_file(path_));
     } catch (const YAML::Exception& e) {
-      throw InputError(path_ + ":" + std::to_string(e.mark.line + 1) + ": not valid YAML: " + e.msg);
+      throw InputError(path_ + ":" + std::to_string(e.mark.line + 1) +
+                       ": not valid YAML: " + e.msg);
     }
   }
 
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& field, const std::string& what) const {
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& field,
+                         const std::string& what) const {
     std::string message = path_;
-    if (node.IsDefined() && node.Mark().line >= 0) message += ":" + std::to_string(node.Mark().line + 1);
+    if (node.IsDefined() && node.Mark().line >= 0)
+      message += ":" + std::to_string(node.Mark().line + 1);
     throw InputError(message + ": " + (field.empty() ? "" : field + ": ") + what);
   }
 
@@ -79,7 +87,8 @@ class ScenarioReader {
     return parent.empty() ? key : parent + "." + key;
   }
 
-  YAML::Node require(const YAML::Node& parent, const std::string& key, const std::string& parent_field) const {
+  YAML::Node require(const YAML::Node& parent, const std::string& key,
+                     const std::string& parent_field) const {
     if (!parent.IsMap()) fail(parent, parent_field, "expected a mapping");
     const YAML::Node node = parent[key];
     if (!node) fail(parent, join(parent_field, key), "missing");
@@ -88,12 +97,17 @@ class ScenarioReader {
 
   // A mapping's key: a plain word (a list or mapping as a key is a fault of the file).
   std::string key_of(const YAML::Node& key, const std::string& field) const {
-    if (!key.IsScalar()) fail(key, field, "expected a field name, found a " + std::string(key.IsSequence() ? "list" : key.IsMap() ? "mapping" : "null"));
+    if (!key.IsScalar())
+      fail(key, field,
+           "expected a field name, found a " + std::string(key.IsSequence() ? "list"
+                                                           : key.IsMap()    ? "mapping"
+                                                                            : "null"));
     return key.Scalar();
   }
 
   // Unknown keys are errors: a misspelt field must not be silently ignored.
-  void expect_keys(const YAML::Node& node, const std::string& field, std::initializer_list<const char*> keys) const {
+  void expect_keys(const YAML::Node& node, const std::string& field,
+                   std::initializer_list<const char*> keys) const {
     if (!node.IsMap()) fail(node, field, "expected a mapping");
     for (const auto& item : node) {
       const std::string key = key_of(item.first, field);
@@ -114,7 +128,8 @@ class ScenarioReader {
     if (!node.IsScalar()) fail(node, field, "expected a number");
     try {
       const double v = node.as<double>();
-      if (!std::isfinite(v)) fail(node, field, "expected a finite number, found \"" + node.Scalar() + "\"");
+      if (!std::isfinite(v))
+        fail(node, field, "expected a finite number, found \"" + node.Scalar() + "\"");
       return v;
     } catch (const YAML::Exception&) {
       fail(node, field, "expected a number, found \"" + node.Scalar() + "\"");
@@ -130,7 +145,8 @@ class ScenarioReader {
   int integer(const YAML::Node& node, const std::string& field, int min) const {
     const double v = number(node, field);
     if (v != std::floor(v) || v < min || v > std::numeric_limits<int>::max())
-      fail(node, field, "expected a whole number >= " + std::to_string(min) + ", found " + node.Scalar());
+      fail(node, field,
+           "expected a whole number >= " + std::to_string(min) + ", found " + node.Scalar());
     return static_cast<int>(v);
   }
 
@@ -142,7 +158,8 @@ class ScenarioReader {
     }
   }
 
-  Eigen::VectorXd numbers(const YAML::Node& node, const std::string& field, int count, const std::string& shape) const {
+  Eigen::VectorXd numbers(const YAML::Node& node, const std::string& field, int count,
+                          const std::string& shape) const {
     if (!node.IsSequence() || int(node.size()) != count) fail(node, field, "expected " + shape);
     Eigen::VectorXd v(count);
     for (int i = 0; i < count; ++i) v[i] = number(node[i], field + "[" + std::to_string(i) + "]");
@@ -154,62 +171,78 @@ class ScenarioReader {
     return (p.is_absolute() ? p : dir_ / p).lexically_normal().string();
   }
 
-  Eigen::Quaterniond orientation(const YAML::Node& parent, const std::string& field, const char* wxyz_key,
-                                 const char* rpy_key) const {
+  Eigen::Quaterniond orientation(const YAML::Node& parent, const std::string& field,
+                                 const char* wxyz_key, const char* rpy_key) const {
     if (parent[wxyz_key] && parent[rpy_key])
-      fail(parent[rpy_key], join(field, rpy_key), std::string("give either ") + wxyz_key + " or " + rpy_key + ", not both");
+      fail(parent[rpy_key], join(field, rpy_key),
+           std::string("give either ") + wxyz_key + " or " + rpy_key + ", not both");
     if (parent[wxyz_key]) {
       const Eigen::VectorXd w = numbers(parent[wxyz_key], join(field, wxyz_key), 4, "[w, x, y, z]");
-      if (w.norm() < 1e-9) fail(parent[wxyz_key], join(field, wxyz_key), "a zero quaternion is no orientation");
+      if (w.norm() < 1e-9)
+        fail(parent[wxyz_key], join(field, wxyz_key), "a zero quaternion is no orientation");
       return Eigen::Quaterniond(w[0], w[1], w[2], w[3]).normalized();
     }
     if (parent[rpy_key]) {
-      const Eigen::VectorXd r = numbers(parent[rpy_key], join(field, rpy_key), 3, "[roll, pitch, yaw] (rad)");
-      return Eigen::AngleAxisd(r[2], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(r[1], Eigen::Vector3d::UnitY()) *
+      const Eigen::VectorXd r =
+          numbers(parent[rpy_key], join(field, rpy_key), 3, "[roll, pitch, yaw] (rad)");
+      return Eigen::AngleAxisd(r[2], Eigen::Vector3d::UnitZ()) *
+             Eigen::AngleAxisd(r[1], Eigen::Vector3d::UnitY()) *
              Eigen::AngleAxisd(r[0], Eigen::Vector3d::UnitX());
     }
     return Eigen::Quaterniond::Identity();
   }
 
   EntitySpec read_entity(const YAML::Node& node, const std::string& field) const {
-    expect_keys(node, field, {"name", "kind", "urdf", "surfaces", "srdf", "package_paths", "base_pose", "configuration"});
+    expect_keys(node, field,
+                {"name", "kind", "urdf", "surfaces", "srdf", "package_paths", "base_pose",
+                 "configuration"});
     EntitySpec e;
     e.name = text(require(node, "name", field), join(field, "name"));
     const YAML::Node kind = require(node, "kind", field);
     if (!parse_entity_kind(text(kind, join(field, "kind")), &e.kind))
-      fail(kind, join(field, "kind"), "expected floating, fixed, object or environment, found \"" + kind.Scalar() + "\"");
+      fail(kind, join(field, "kind"),
+           "expected floating, fixed, object or environment, found \"" + kind.Scalar() + "\"");
     e.urdf = path_of(require(node, "urdf", field), join(field, "urdf"));
     if (node["surfaces"]) e.surfaces = path_of(node["surfaces"], join(field, "surfaces"));
     if (node["srdf"]) e.srdf = path_of(node["srdf"], join(field, "srdf"));
     if (const YAML::Node paths = node["package_paths"]) {
-      if (!paths.IsSequence()) fail(paths, join(field, "package_paths"), "expected a list of folders");
+      if (!paths.IsSequence())
+        fail(paths, join(field, "package_paths"), "expected a list of folders");
       for (size_t i = 0; i < paths.size(); ++i)
-        e.package_paths.push_back(path_of(paths[i], join(field, "package_paths[" + std::to_string(i) + "]")));
+        e.package_paths.push_back(
+            path_of(paths[i], join(field, "package_paths[" + std::to_string(i) + "]")));
     }
     if (const YAML::Node pose = node["base_pose"]) {
       const std::string f = join(field, "base_pose");
       if (e.kind == EntityKind::FloatingRobot || e.kind == EntityKind::Object)
-        fail(pose, f, "a floating entity's pose is its configuration (configuration.base_position)");
+        fail(pose, f,
+             "a floating entity's pose is its configuration (configuration.base_position)");
       expect_keys(pose, f, {"position", "orientation_wxyz", "rpy"});
-      if (pose["position"]) e.T_WB.translation() = numbers(pose["position"], join(f, "position"), 3, "[x, y, z]");
+      if (pose["position"])
+        e.T_WB.translation() = numbers(pose["position"], join(f, "position"), 3, "[x, y, z]");
       e.T_WB.linear() = orientation(pose, f, "orientation_wxyz", "rpy").toRotationMatrix();
     }
     if (node["configuration"] && e.kind == EntityKind::Environment)
-      fail(node["configuration"], join(field, "configuration"), "the environment has no configuration");
+      fail(node["configuration"], join(field, "configuration"),
+           "the environment has no configuration");
     return e;
   }
 
   // A (partial) configuration of entity e written into q: base pose and named joints.
-  void read_configuration(const YAML::Node& node, const std::string& field, int e, Eigen::VectorXd& q,
-                          const Scene& scene, Eigen::VectorXd* stated = nullptr) const {
+  void read_configuration(const YAML::Node& node, const std::string& field, int e,
+                          Eigen::VectorXd& q, const Scene& scene,
+                          Eigen::VectorXd* stated = nullptr) const {
     expect_keys(node, field, {"base_position", "base_orientation_wxyz", "base_rpy", "joints"});
     const System& system = scene.system;
     const Entity& entity = system.entity(e);
     const int offset = system.offset(e);
-    if (!entity.floating() && (node["base_position"] || node["base_orientation_wxyz"] || node["base_rpy"]))
-      fail(node, field, "entity \"" + entity.name + "\" is not floating: give its base_pose instead");
+    if (!entity.floating() &&
+        (node["base_position"] || node["base_orientation_wxyz"] || node["base_rpy"]))
+      fail(node, field,
+           "entity \"" + entity.name + "\" is not floating: give its base_pose instead");
     if (node["base_position"]) {
-      q.segment<3>(offset) = numbers(node["base_position"], join(field, "base_position"), 3, "[x, y, z]");
+      q.segment<3>(offset) =
+          numbers(node["base_position"], join(field, "base_position"), 3, "[x, y, z]");
       if (stated) stated->segment<3>(offset).setOnes();
     }
     if (node["base_orientation_wxyz"] || node["base_rpy"]) {
@@ -219,7 +252,8 @@ class ScenarioReader {
     }
     const YAML::Node joints = node["joints"];
     if (!joints) return;
-    if (!joints.IsMap()) fail(joints, join(field, "joints"), "expected a mapping joint name: value (rad or m)");
+    if (!joints.IsMap())
+      fail(joints, join(field, "joints"), "expected a mapping joint name: value (rad or m)");
     const Model& model = *entity.model;
     for (const auto& item : joints) {
       const std::string name = key_of(item.first, join(field, "joints"));
@@ -227,14 +261,16 @@ class ScenarioReader {
       const int dof = model.find_dof(name);
       if (dof < 0) {
         const int j = model.find_joint(name);
-        fail(item.first, f, j < 0 ? "model \"" + model.name + "\" has no joint \"" + name + "\""
-                                  : "joint \"" + name + "\" is not an independent joint (fixed or mimic)");
+        fail(item.first, f,
+             j < 0 ? "model \"" + model.name + "\" has no joint \"" + name + "\""
+                   : "joint \"" + name + "\" is not an independent joint (fixed or mimic)");
       }
       const double value = number(item.second, f);
       const Joint& joint = model.joints[model.dof_joints[dof]];
       if (joint.has_position_limits && (value < joint.lower - 1e-9 || value > joint.upper + 1e-9))
-        fail(item.second, f, std::to_string(value) + " is outside the joint's limits [" + std::to_string(joint.lower) +
-                                 ", " + std::to_string(joint.upper) + "]");
+        fail(item.second, f,
+             std::to_string(value) + " is outside the joint's limits [" +
+                 std::to_string(joint.lower) + ", " + std::to_string(joint.upper) + "]");
       q[offset + entity.first_dof() + dof] = value;
       if (stated) (*stated)[offset + entity.first_dof() + dof] = 1.0;
     }
@@ -245,14 +281,18 @@ class ScenarioReader {
     if (auto ref = scene.surfaces.find(scene.system, id)) return *ref;
     const size_t slash = id.find('/');
     const int e = slash == std::string::npos ? -1 : scene.system.find_entity(id.substr(0, slash));
-    if (e < 0) fail(node, field, "no surface \"" + id + "\" (expected \"entity/surface\" with a known entity)");
+    if (e < 0)
+      fail(node, field,
+           "no surface \"" + id + "\" (expected \"entity/surface\" with a known entity)");
     std::string known;
     for (const Surface& s : scene.surfaces.of(e)) known += (known.empty() ? "" : ", ") + s.name;
-    fail(node, field, "no surface \"" + id + "\" (entity \"" + scene.system.entity(e).name + "\" has: " +
-                          (known.empty() ? "no surfaces" : known) + ")");
+    fail(node, field,
+         "no surface \"" + id + "\" (entity \"" + scene.system.entity(e).name +
+             "\" has: " + (known.empty() ? "no surfaces" : known) + ")");
   }
 
-  std::vector<StanceContact> read_stance(const YAML::Node& node, const std::string& field, const Scene& scene) const {
+  std::vector<StanceContact> read_stance(const YAML::Node& node, const std::string& field,
+                                         const Scene& scene) const {
     if (!node.IsSequence()) fail(node, field, "expected a list of contacts {s1, s2}");
     std::vector<StanceContact> out;
     std::vector<SurfaceRef> smaller, larger;
@@ -268,18 +308,25 @@ class ScenarioReader {
       if (c["bilateral"]) sc.contact.bilateral = boolean(c["bilateral"], f + ".bilateral");
       if (c["fixed"]) sc.contact.fixed = boolean(c["fixed"], f + ".fixed");
       if (c["placement"]) {
-        const Eigen::VectorXd p = numbers(c["placement"], f + ".placement", 3, "[x, y, theta] of s1 in s2's frame");
+        const Eigen::VectorXd p =
+            numbers(c["placement"], f + ".placement", 3, "[x, y, theta] of s1 in s2's frame");
         sc.placement = Placement{p[0], p[1], p[2]};
       }
       const Surface& s1 = scene.surfaces.get(sc.contact.s1);
       const Surface& s2 = scene.surfaces.get(sc.contact.s2);
       if (sc.contact.s1.entity == sc.contact.s2.entity && s1.link == s2.link)
         fail(c, f, "s1 and s2 are on the same link \"" + s1.link_name + "\"");
-      const auto in = [](const std::vector<SurfaceRef>& l, SurfaceRef r) { return std::find(l.begin(), l.end(), r) != l.end(); };
+      const auto in = [](const std::vector<SurfaceRef>& l, SurfaceRef r) {
+        return std::find(l.begin(), l.end(), r) != l.end();
+      };
       if (in(smaller, sc.contact.s1) || in(larger, sc.contact.s1))
-        fail(c["s1"], f + ".s1", "surface \"" + scene.surfaces.id(scene.system, sc.contact.s1) + "\" is already in a contact of this stance");
+        fail(c["s1"], f + ".s1",
+             "surface \"" + scene.surfaces.id(scene.system, sc.contact.s1) +
+                 "\" is already in a contact of this stance");
       if (in(smaller, sc.contact.s2))
-        fail(c["s2"], f + ".s2", "surface \"" + scene.surfaces.id(scene.system, sc.contact.s2) + "\" is already the smaller surface of a contact of this stance");
+        fail(c["s2"], f + ".s2",
+             "surface \"" + scene.surfaces.id(scene.system, sc.contact.s2) +
+                 "\" is already the smaller surface of a contact of this stance");
       smaller.push_back(sc.contact.s1);
       larger.push_back(sc.contact.s2);
       out.push_back(sc);
@@ -289,13 +336,14 @@ class ScenarioReader {
 
   // Under gravity a floating entity needs at least one contact to be in static equilibrium (E16):
   // an empty stance could never be realised, so it is a fault of the file, not a search failure.
-  void require_support(const YAML::Node& node, const std::string& field, const std::vector<StanceContact>& stance,
-                       const Scenario& s) const {
+  void require_support(const YAML::Node& node, const std::string& field,
+                       const std::vector<StanceContact>& stance, const Scenario& s) const {
     if (!stance.empty() || s.spec.gravity.norm() == 0.0) return;
     for (const Entity& entity : s.scene.system.entities())
       if (entity.floating())
-        fail(node, field, "expected at least one contact, found none: the floating entity \"" + entity.name +
-                              "\" cannot be in static equilibrium under gravity without one");
+        fail(node, field,
+             "expected at least one contact, found none: the floating entity \"" + entity.name +
+                 "\" cannot be in static equilibrium under gravity without one");
   }
 
   // Milestones are partial: what a milestone leaves out keeps its value from the previous one
@@ -334,9 +382,11 @@ class ScenarioReader {
   void read_physics(const YAML::Node& node, Scenario& s) const {
     if (!node) return;
     expect_keys(node, "physics", {"gravity", "friction", "cone_generators"});
-    if (node["gravity"]) s.spec.gravity = numbers(node["gravity"], "physics.gravity", 3, "[gx, gy, gz] (m/s^2)");
+    if (node["gravity"])
+      s.spec.gravity = numbers(node["gravity"], "physics.gravity", 3, "[gx, gy, gz] (m/s^2)");
     if (node["friction"]) s.solver.friction = positive(node["friction"], "physics.friction");
-    if (node["cone_generators"]) s.solver.cone_generators = integer(node["cone_generators"], "physics.cone_generators", 3);
+    if (node["cone_generators"])
+      s.solver.cone_generators = integer(node["cone_generators"], "physics.cone_generators", 3);
   }
 
   void read_weights(const YAML::Node& node, Scenario& s) const {
@@ -358,17 +408,22 @@ class ScenarioReader {
     expect_keys(node, "collision", {"enabled", "margin", "active_distance", "ignore"});
     if (node["enabled"]) s.spec.collision = boolean(node["enabled"], "collision.enabled");
     if (node["margin"]) s.solver.collision_margin = number(node["margin"], "collision.margin");
-    if (node["active_distance"]) s.solver.collision_active_distance = positive(node["active_distance"], "collision.active_distance");
+    if (node["active_distance"])
+      s.solver.collision_active_distance =
+          positive(node["active_distance"], "collision.active_distance");
     if (const YAML::Node ignore = node["ignore"]) {
-      if (!ignore.IsSequence()) fail(ignore, "collision.ignore", "expected a list of [entity/link, entity/link]");
+      if (!ignore.IsSequence())
+        fail(ignore, "collision.ignore", "expected a list of [entity/link, entity/link]");
       for (size_t i = 0; i < ignore.size(); ++i) {
         const std::string f = "collision.ignore[" + std::to_string(i) + "]";
-        if (!ignore[i].IsSequence() || ignore[i].size() != 2) fail(ignore[i], f, "expected [entity/link, entity/link]");
+        if (!ignore[i].IsSequence() || ignore[i].size() != 2)
+          fail(ignore[i], f, "expected [entity/link, entity/link]");
         LinkName names[2];
         for (int k = 0; k < 2; ++k) {
           const std::string id = text(ignore[i][k], f);
           const size_t slash = id.find('/');
-          if (slash == std::string::npos) fail(ignore[i][k], f, "expected \"entity/link\", found \"" + id + "\"");
+          if (slash == std::string::npos)
+            fail(ignore[i][k], f, "expected \"entity/link\", found \"" + id + "\"");
           names[k] = {id.substr(0, slash), id.substr(slash + 1)};
         }
         s.spec.ignored_pairs.emplace_back(names[0], names[1]);
@@ -378,21 +433,36 @@ class ScenarioReader {
 
   void read_search(const YAML::Node& node, Scenario& s) const {
     if (!node) return;
-    expect_keys(node, "search", {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
-                                 "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
-                                 "max_retries", "contact_pairs", "last_contacts", "min_contacts"});
-    if (node["contact_pairs"]) read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
-    if (node["last_contacts"]) read_patterns(node["last_contacts"], "search.last_contacts", &s.search.last_contacts);
-    if (node["contact_reach"]) s.search.contact_reach = positive(node["contact_reach"], "search.contact_reach");
-    if (node["self_contacts"]) s.search.self_contacts = boolean(node["self_contacts"], "search.self_contacts");
-    if (node["min_contacts"]) s.search.min_contacts = integer(node["min_contacts"], "search.min_contacts", 1);
-    if (node["placement_tolerance"]) s.search.placement_tolerance = positive(node["placement_tolerance"], "search.placement_tolerance");
-    if (node["orientation_tolerance"]) s.search.orientation_tolerance = positive(node["orientation_tolerance"], "search.orientation_tolerance");
-    if (node["stance_weight"]) s.search.stance_weight = number(node["stance_weight"], "search.stance_weight");
-    if (node["max_retries"]) s.search.max_retries = integer(node["max_retries"], "search.max_retries", 0);
+    expect_keys(node, "search",
+                {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
+                 "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
+                 "max_retries", "contact_pairs", "last_contacts", "min_contacts"});
+    if (node["contact_pairs"])
+      read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
+    if (node["last_contacts"])
+      read_patterns(node["last_contacts"], "search.last_contacts", &s.search.last_contacts);
+    if (node["contact_reach"])
+      s.search.contact_reach = positive(node["contact_reach"], "search.contact_reach");
+    if (node["self_contacts"])
+      s.search.self_contacts = boolean(node["self_contacts"], "search.self_contacts");
+    if (node["min_contacts"])
+      s.search.min_contacts = integer(node["min_contacts"], "search.min_contacts", 1);
+    if (node["placement_tolerance"])
+      s.search.placement_tolerance =
+          positive(node["placement_tolerance"], "search.placement_tolerance");
+    if (node["orientation_tolerance"])
+      s.search.orientation_tolerance =
+          positive(node["orientation_tolerance"], "search.orientation_tolerance");
+    if (node["stance_weight"])
+      s.search.stance_weight = number(node["stance_weight"], "search.stance_weight");
+    if (node["max_retries"])
+      s.search.max_retries = integer(node["max_retries"], "search.max_retries", 0);
     if (node["max_nodes"]) s.search.max_nodes = integer(node["max_nodes"], "search.max_nodes", 1);
-    if (node["time_limit"]) s.search.time_limit_s = positive(node["time_limit"], "search.time_limit");
-    if (node["milestone_tolerance"]) s.search.milestone_tolerance = positive(node["milestone_tolerance"], "search.milestone_tolerance");
+    if (node["time_limit"])
+      s.search.time_limit_s = positive(node["time_limit"], "search.time_limit");
+    if (node["milestone_tolerance"])
+      s.search.milestone_tolerance =
+          positive(node["milestone_tolerance"], "search.milestone_tolerance");
     if (node["threads"]) s.search.threads = integer(node["threads"], "search.threads", 0);
   }
 
@@ -401,7 +471,8 @@ class ScenarioReader {
     if (!pairs.IsSequence()) fail(pairs, field, "expected a list of [s1 pattern, s2 pattern]");
     for (size_t i = 0; i < pairs.size(); ++i) {
       const std::string f = field + "[" + std::to_string(i) + "]";
-      if (!pairs[i].IsSequence() || pairs[i].size() != 2) fail(pairs[i], f, "expected [s1 pattern, s2 pattern]");
+      if (!pairs[i].IsSequence() || pairs[i].size() != 2)
+        fail(pairs[i], f, "expected [s1 pattern, s2 pattern]");
       out->emplace_back(text(pairs[i][0], f), text(pairs[i][1], f));
     }
   }
@@ -409,7 +480,8 @@ class ScenarioReader {
   void read_solver(const YAML::Node& node, Scenario& s) const {
     if (!node) return;
     expect_keys(node, "solver", {"max_iterations", "tolerance"});
-    if (node["max_iterations"]) s.solver.max_iterations = integer(node["max_iterations"], "solver.max_iterations", 1);
+    if (node["max_iterations"])
+      s.solver.max_iterations = integer(node["max_iterations"], "solver.max_iterations", 1);
     if (node["tolerance"]) s.solver.tolerance = positive(node["tolerance"], "solver.tolerance");
   }
 

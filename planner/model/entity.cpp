@@ -4,10 +4,14 @@ namespace stanceplan {
 
 const char* to_string(EntityKind kind) {
   switch (kind) {
-    case EntityKind::Environment: return "environment";
-    case EntityKind::FixedRobot: return "fixed";
-    case EntityKind::FloatingRobot: return "floating";
-    case EntityKind::Object: return "object";
+    case EntityKind::Environment:
+      return "environment";
+    case EntityKind::FixedRobot:
+      return "fixed";
+    case EntityKind::FloatingRobot:
+      return "floating";
+    case EntityKind::Object:
+      return "object";
   }
   return "?";
 }

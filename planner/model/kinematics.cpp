@@ -69,7 +69,8 @@ std::vector<ModelData> system_kinematics(const System& system, const Eigen::Vect
   data.reserve(system.num_entities());
   for (int e = 0; e < system.num_entities(); ++e) {
     data.emplace_back(system.entity(e));
-    forward_kinematics(system.entity(e), q.segment(system.offset(e), system.entity(e).nq()), data.back());
+    forward_kinematics(system.entity(e), q.segment(system.offset(e), system.entity(e).nq()),
+                       data.back());
   }
   return data;
 }
@@ -91,7 +92,8 @@ void point_jacobian_world(const Entity& entity, const ModelData& data, int link,
     if (!joint.movable()) continue;
     // E30-E31: a revolute joint moves the point by a x (p - o); a prismatic one along a.
     if (is_rotational(joint.type))
-      J.col(first_dof + joint.dof) += joint.multiplier * data.axis_W[j].cross(p_W - data.origin_W[j]);
+      J.col(first_dof + joint.dof) +=
+          joint.multiplier * data.axis_W[j].cross(p_W - data.origin_W[j]);
     else
       J.col(first_dof + joint.dof) += joint.multiplier * data.axis_W[j];
   }
@@ -123,10 +125,12 @@ void vector_jacobian(const Entity& entity, const ModelData& data, int link,
 
 Eigen::Vector3d center_of_mass(const Entity& entity, const ModelData& data) {
   const Model& model = *entity.model;
-  return model.total_mass > 0.0 ? Eigen::Vector3d(data.subtree_moment_W[0] / model.total_mass) : data.p_WB;
+  return model.total_mass > 0.0 ? Eigen::Vector3d(data.subtree_moment_W[0] / model.total_mass)
+                                : data.p_WB;
 }
 
-void center_of_mass_jacobian(const Entity& entity, const ModelData& data, Eigen::Ref<Eigen::MatrixXd> J) {
+void center_of_mass_jacobian(const Entity& entity, const ModelData& data,
+                             Eigen::Ref<Eigen::MatrixXd> J) {
   const Model& model = *entity.model;
   J.setZero();
   if (model.total_mass <= 0.0) return;
@@ -144,9 +148,11 @@ void center_of_mass_jacobian(const Entity& entity, const ModelData& data, Eigen:
     // Joint j moves the subtree below it: M_l (c_l - o_j) turns about a_j, or M_l slides along it.
     const double m = model.subtree_mass[l];
     const Eigen::Vector3d& a = data.axis_W[j];
-    J.col(first_dof + joint.dof) += joint.multiplier * inv_mass *
-        (is_rotational(joint.type) ? Eigen::Vector3d(a.cross(data.subtree_moment_W[l] - m * data.origin_W[j]))
-                                   : Eigen::Vector3d(m * a));
+    J.col(first_dof + joint.dof) +=
+        joint.multiplier * inv_mass *
+        (is_rotational(joint.type)
+             ? Eigen::Vector3d(a.cross(data.subtree_moment_W[l] - m * data.origin_W[j]))
+             : Eigen::Vector3d(m * a));
   }
 }
 

@@ -31,6 +31,7 @@ void vector_jacobian(const Entity& entity, const ModelData& data, int link,
 
 Eigen::Vector3d center_of_mass(const Entity& entity, const ModelData& data);
 // d C / dq, from the subtree moments: a joint moves the CoM of everything below it.
-void center_of_mass_jacobian(const Entity& entity, const ModelData& data, Eigen::Ref<Eigen::MatrixXd> J);
+void center_of_mass_jacobian(const Entity& entity, const ModelData& data,
+                             Eigen::Ref<Eigen::MatrixXd> J);
 
 }  // namespace stanceplan

@@ -28,7 +28,7 @@ struct Joint {
   bool has_position_limits = false;
   double lower = 0.0;
   double upper = 0.0;
-  double effort = 0.0;    // 0 means "no effort limit given"
+  double effort = 0.0;  // 0 means "no effort limit given"
   double velocity = 0.0;
   // Value of this joint = multiplier * q[dof] + offset. For an independent joint multiplier = 1,
   // offset = 0; for a mimic joint dof is its source's index. -1 for fixed joints.
@@ -53,12 +53,12 @@ struct Link {
 class Model {
  public:
   std::string name;
-  std::string source_file;           // the URDF it was loaded from (empty if built in code)
-  std::vector<Link> links;           // topological order, links[0] is the root
-  std::vector<Joint> joints;         // every joint, in the order of their child links
-  std::vector<int> dof_joints;       // dof_joints[k] = joint index driven directly by q[k]
+  std::string source_file;      // the URDF it was loaded from (empty if built in code)
+  std::vector<Link> links;      // topological order, links[0] is the root
+  std::vector<Joint> joints;    // every joint, in the order of their child links
+  std::vector<int> dof_joints;  // dof_joints[k] = joint index driven directly by q[k]
   double total_mass = 0.0;
-  std::vector<double> subtree_mass;  // per link: mass of the link and everything below it
+  std::vector<double> subtree_mass;        // per link: mass of the link and everything below it
   std::vector<std::string> load_warnings;  // non-fatal faults found while loading (skipped parts)
 
   int num_dofs() const { return static_cast<int>(dof_joints.size()); }

@@ -10,9 +10,9 @@ namespace {
 Eigen::Matrix3d rotation_of_unit(const Eigen::Vector4d& u) {
   const double w = u[0], x = u[1], y = u[2], z = u[3];
   Eigen::Matrix3d R;
-  R << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
-      2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-      2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y);
+  R << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 2 * (x * y + w * z),
+      1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 2 * (x * z - w * y), 2 * (y * z + w * x),
+      1 - 2 * (x * x + y * y);
   return R;
 }
 

@@ -9,7 +9,8 @@ enum class ShapeType { Box, Cylinder, Sphere, Mesh };
 
 struct Shape {
   ShapeType type = ShapeType::Box;
-  // Box: full side lengths (x, y, z). Cylinder: (radius, length, 0) along z. Sphere: (radius, 0, 0).
+  // Box: full side lengths (x, y, z). Cylinder: (radius, length, 0) along z. Sphere: (radius, 0,
+  // 0).
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
   std::string mesh_uri;   // as written in the URDF (mesh only)
   std::string mesh_path;  // resolved file path; empty when it could not be resolved (visuals only)

@@ -16,9 +16,10 @@ int System::add(Entity entity) {
                      entity.model->name + "\" has " + std::to_string(entity.model->num_dofs()) +
                      " movable joints (use kind \"floating\" for an articulated free body)");
   if (entity.kind == EntityKind::Environment && entity.model->num_dofs() != 0)
-    throw InputError("entity \"" + entity.name + "\": the environment must have no movable joint, "
-                     "model \"" + entity.model->name + "\" has " +
-                     std::to_string(entity.model->num_dofs()));
+    throw InputError("entity \"" + entity.name +
+                     "\": the environment must have no movable joint, "
+                     "model \"" +
+                     entity.model->name + "\" has " + std::to_string(entity.model->num_dofs()));
   offsets_.push_back(nq_);
   nq_ += entity.nq();
   entities_.push_back(std::move(entity));

@@ -19,7 +19,7 @@ struct PlanStep {
   std::vector<PlanContact> contacts;  // every contact touched at this configuration
   Stance stance;                      // sigma_i
   Eigen::VectorXd q;
-  std::vector<VertexForce> forces;    // VertexForce::contact indexes `contacts`
+  std::vector<VertexForce> forces;       // VertexForce::contact indexes `contacts`
   std::vector<Eigen::VectorXd> torques;  // per entity (empty for entities without dofs)
   PostureStatus status = PostureStatus::Solved;
   int iterations = 0;

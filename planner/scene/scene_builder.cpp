@@ -16,7 +16,8 @@ Scene build_scene(const SceneSpec& spec, HullCache* cache) {
     UrdfOptions options;
     options.packages.directories = e.package_paths;
     auto model = std::make_shared<Model>(load_urdf(e.urdf, options));
-    surfaces.push_back(e.surfaces.empty() ? std::vector<Surface>{} : load_surface_file(e.surfaces, *model));
+    surfaces.push_back(e.surfaces.empty() ? std::vector<Surface>{}
+                                          : load_surface_file(e.surfaces, *model));
     Entity entity;
     entity.name = e.name;
     entity.kind = e.kind;
@@ -26,7 +27,8 @@ Scene build_scene(const SceneSpec& spec, HullCache* cache) {
     if (!e.srdf.empty()) collision_options.srdf_files.emplace_back(e.name, e.srdf);
   }
   scene.surfaces = SurfaceSet(scene.system.num_entities());
-  for (int i = 0; i < scene.system.num_entities(); ++i) scene.surfaces.set(i, std::move(surfaces[i]));
+  for (int i = 0; i < scene.system.num_entities(); ++i)
+    scene.surfaces.set(i, std::move(surfaces[i]));
   collision_options.disabled_pairs = spec.ignored_pairs;
   if (spec.collision)
     scene.collision = std::make_shared<CollisionModel>(scene.system, collision_options, cache);

@@ -1,20 +1,22 @@
 #include "planner/search/candidates.h"
 
+#include <fnmatch.h>
 #include <algorithm>
 #include <cmath>
-#include <fnmatch.h>
 
 namespace stanceplan {
 namespace {
 
-std::vector<Eigen::Vector3d> world_vertices(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef r) {
+std::vector<Eigen::Vector3d> world_vertices(const Scene& scene, const std::vector<ModelData>& data,
+                                            SurfaceRef r) {
   const Surface& s = scene.surfaces.get(r);
   std::vector<Eigen::Vector3d> out;
   for (const Eigen::Vector3d& v : s.vertices_L()) out.push_back(data[r.entity].T_WL[s.link] * v);
   return out;
 }
 
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                              const Eigen::Vector3d& b) {
   const Eigen::Vector3d ab = b - a;
   const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-18), 0.0, 1.0);
   return (p - (a + t * ab)).norm();
@@ -29,27 +31,32 @@ double point_polygon_distance(const Eigen::Vector3d& p, const std::vector<Eigen:
     if ((poly[(i + 1) % n] - poly[i]).cross(p - poly[i]).dot(normal) < 0.0) inside = false;
   if (inside) return std::abs((p - poly[0]).dot(normal));
   double d = INFINITY;
-  for (int i = 0; i < n; ++i) d = std::min(d, point_segment_distance(p, poly[i], poly[(i + 1) % n]));
+  for (int i = 0; i < n; ++i)
+    d = std::min(d, point_segment_distance(p, poly[i], poly[(i + 1) % n]));
   return d;
 }
 
 // A floating body with mass must keep at least one contact on it (SearchOptions::min_contacts).
-bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int removed, int min_contacts) {
+bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int removed,
+                               int min_contacts) {
   const Contact& c = stance.contacts()[removed];
   for (SurfaceRef r : {c.s1, c.s2}) {
     const Entity& e = scene.system.entity(r.entity);
     if (!e.floating() || e.model->total_mass <= 0.0) continue;
     int others = 0;
     for (int i = 0; i < stance.size(); ++i)
-      if (i != removed && (stance.contacts()[i].s1.entity == r.entity || stance.contacts()[i].s2.entity == r.entity))
+      if (i != removed && (stance.contacts()[i].s1.entity == r.entity ||
+                           stance.contacts()[i].s2.entity == r.entity))
         ++others;
     if (others < std::max(1, min_contacts)) return true;
   }
   return false;
 }
 
-bool matches(const Scene& scene, const Contact& c, const std::vector<std::pair<std::string, std::string>>& patterns) {
-  const std::string s1 = scene.surfaces.id(scene.system, c.s1), s2 = scene.surfaces.id(scene.system, c.s2);
+bool matches(const Scene& scene, const Contact& c,
+             const std::vector<std::pair<std::string, std::string>>& patterns) {
+  const std::string s1 = scene.surfaces.id(scene.system, c.s1),
+                    s2 = scene.surfaces.id(scene.system, c.s2);
   for (const auto& [p1, p2] : patterns)
     if ((fnmatch(p1.c_str(), s1.c_str(), 0) == 0 && fnmatch(p2.c_str(), s2.c_str(), 0) == 0) ||
         (fnmatch(p1.c_str(), s2.c_str(), 0) == 0 && fnmatch(p2.c_str(), s1.c_str(), 0) == 0))
@@ -81,7 +88,8 @@ bool link_is_static(const Scene& scene, int entity, int link) {
   return true;
 }
 
-double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a, SurfaceRef b) {
+double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
+                   SurfaceRef b) {
   const auto va = world_vertices(scene, data, a), vb = world_vertices(scene, data, b);
   const Surface& sa = scene.surfaces.get(a);
   const Surface& sb = scene.surfaces.get(b);
@@ -108,7 +116,8 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
   for (int e = 0; e < scene.system.num_entities(); ++e)
     for (int k = 0; k < int(scene.surfaces.of(e).size()); ++k) all.push_back({e, k});
   auto used_as_s1 = [&](SurfaceRef r) {
-    return std::any_of(stance.contacts().begin(), stance.contacts().end(), [&](const Contact& c) { return c.s1 == r; });
+    return std::any_of(stance.contacts().begin(), stance.contacts().end(),
+                       [&](const Contact& c) { return c.s1 == r; });
   };
   for (size_t i = 0; i < all.size(); ++i)
     for (size_t j = i + 1; j < all.size(); ++j) {
@@ -117,7 +126,8 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       const Surface& sb = scene.surfaces.get(b);
       if (a.entity == b.entity && sa.link == sb.link) continue;
       if (a.entity == b.entity && !options.self_contacts) continue;
-      if (link_is_static(scene, a.entity, sa.link) && link_is_static(scene, b.entity, sb.link)) continue;
+      if (link_is_static(scene, a.entity, sa.link) && link_is_static(scene, b.entity, sb.link))
+        continue;
       Contact c;
       // s1 is the smaller surface, unless the goal states the pair the other way round.
       c.s1 = sa.area() <= sb.area() ? a : b;
@@ -126,10 +136,13 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       Contact reversed = c;
       std::swap(reversed.s1, reversed.s2);
       const int in_goal_reversed = goal.find(reversed);
-      if (in_goal >= 0) c = goal.contacts()[in_goal];
-      else if (in_goal_reversed >= 0) c = goal.contacts()[in_goal_reversed];
+      if (in_goal >= 0)
+        c = goal.contacts()[in_goal];
+      else if (in_goal_reversed >= 0)
+        c = goal.contacts()[in_goal_reversed];
       if (stance.find(c) >= 0 || stance.uses_surface(c.s1) || used_as_s1(c.s2)) continue;
-      if (!allowed_pair(scene, c, options) || !allowed_now(scene, c, stance, goal, options)) continue;
+      if (!allowed_pair(scene, c, options) || !allowed_now(scene, c, stance, goal, options))
+        continue;
       if (surface_gap(scene, data, c.s1, c.s2) > options.contact_reach) continue;
       out.push_back({true, c});
     }

@@ -26,7 +26,7 @@
 namespace stanceplan {
 
 struct Candidate {
-  bool add = true;     // case 1 (add `contact`) or case 2 (remove `contact`)
+  bool add = true;  // case 1 (add `contact`) or case 2 (remove `contact`)
   Contact contact;
 };
 
@@ -37,7 +37,8 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
                                             const SearchOptions& options);
 
 // Distance between two surfaces' polygons in the world (0 when they touch or cross).
-double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a, SurfaceRef b);
+double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
+                   SurfaceRef b);
 
 // True when a link's pose never depends on the configuration.
 bool link_is_static(const Scene& scene, int entity, int link);

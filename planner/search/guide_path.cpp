@@ -7,13 +7,17 @@ namespace stanceplan {
 
 GuidePath::GuidePath(const System& system, std::vector<Eigen::VectorXd> milestones,
                      std::vector<Eigen::VectorXd> masks, GuideMetric metric)
-    : system_(system), milestones_(std::move(milestones)), masks_(std::move(masks)), metric_(metric) {}
+    : system_(system),
+      milestones_(std::move(milestones)),
+      masks_(std::move(masks)),
+      metric_(metric) {}
 
 double GuidePath::distance_to(const Eigen::VectorXd& q, int t) const {
   return distance(q, milestones_.at(t), t < int(masks_.size()) ? &masks_[t] : nullptr);
 }
 
-double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b, const Eigen::VectorXd* mask) const {
+double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
+                           const Eigen::VectorXd* mask) const {
   auto stated = [&](int i) { return mask == nullptr || (*mask)[i] > 0.0; };
   double sum = 0.0;
   for (int e = 0; e < system_.num_entities(); ++e) {
@@ -23,8 +27,10 @@ double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b, c
       for (int i = 0; i < 3; ++i)
         if (stated(o + i)) sum += std::pow(metric_.position * (a[o + i] - b[o + i]), 2);
       if (stated(o + 3)) {
-        const Eigen::Vector4d qa = a.segment<4>(o + 3).normalized(), qb = b.segment<4>(o + 3).normalized();
-        const double angle = 2.0 * std::acos(std::min(1.0, std::abs(qa.dot(qb))));  // q and -q: one rotation
+        const Eigen::Vector4d qa = a.segment<4>(o + 3).normalized(),
+                              qb = b.segment<4>(o + 3).normalized();
+        const double angle =
+            2.0 * std::acos(std::min(1.0, std::abs(qa.dot(qb))));  // q and -q: one rotation
         sum += std::pow(metric_.orientation * angle, 2);
       }
     }

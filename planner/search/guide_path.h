@@ -30,7 +30,8 @@ class GuidePath {
  private:
   const System& system_;
   // mask == nullptr: every entry.
-  double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b, const Eigen::VectorXd* mask) const;
+  double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
+                  const Eigen::VectorXd* mask) const;
 
   std::vector<Eigen::VectorXd> milestones_;
   std::vector<Eigen::VectorXd> masks_;

@@ -23,30 +23,31 @@ enum class CandidateCase { None, Add, Remove };  // docs/METHOD.md case 1 / case
 struct SearchEvent {
   int number = 0;  // 0, 1, 2, ... in the order the search publishes them
   SearchEventKind kind = SearchEventKind::Expansion;
-  int node = -1;         // the node expanded, created, reaching the milestone, or the goal node
-  int parent = -1;       // candidates: the node being expanded
-  Stance stance;         // the node's stance, or the candidate's target stance
+  int node = -1;    // the node expanded, created, reaching the milestone, or the goal node
+  int parent = -1;  // candidates: the node being expanded
+  Stance stance;    // the node's stance, or the candidate's target stance
   CandidateCase candidate_case = CandidateCase::None;
-  Contact changed;       // candidates: the contact added or removed
+  Contact changed;                               // candidates: the contact added or removed
   PostureStatus status = PostureStatus::Solved;  // candidates
-  std::string message;   // candidates: why rejected; failure: why
-  bool accepted = false; // candidates: a new node was made
-  Eigen::VectorXd q;     // the configuration (candidates: the solver's final iterate)
+  std::string message;                           // candidates: why rejected; failure: why
+  bool accepted = false;                         // candidates: a new node was made
+  Eigen::VectorXd q;                  // the configuration (candidates: the solver's final iterate)
   std::vector<PlanContact> contacts;  // touched at q, with which carry force
   std::vector<VertexForce> forces;    // VertexForce::contact indexes `contacts`
-  double time_ms = 0.0;  // candidates: solver time
+  double time_ms = 0.0;               // candidates: solver time
   // Candidates and expansions: the solve's figures, for inspection (the GUI's node view).
   int iterations = 0;
-  std::vector<Eigen::VectorXd> torques;       // per entity (empty for entities without dofs)
-  std::map<std::string, double> residuals;    // candidates: worst violation per family
-  int milestone = 0;     // the milestone index targeted after this event
-  int nodes = 0;         // tree size after this event
+  std::vector<Eigen::VectorXd> torques;     // per entity (empty for entities without dofs)
+  std::map<std::string, double> residuals;  // candidates: worst violation per family
+  int milestone = 0;                        // the milestone index targeted after this event
+  int nodes = 0;                            // tree size after this event
 };
 
 using SearchObserver = std::function<void(const SearchEvent&)>;
 
 // Holds the search between events while paused. The search calls pass() before publishing each
-// event; pause() / step(n) / resume() come from any other thread. cancel() releases a waiting search.
+// event; pause() / step(n) / resume() come from any other thread. cancel() releases a waiting
+// search.
 class StepGate {
  public:
   void pause();

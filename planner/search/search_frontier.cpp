@@ -46,7 +46,7 @@ SearchNode StanceSearch::Run::make_node(int parent, const PostureRequest& reques
 double StanceSearch::Run::milestone_tolerance(int m) const {
   const auto& given = problem_.milestone_tolerances;
   return m < int(given.size()) && given[size_t(m)] > 0.0 ? given[size_t(m)]
-                                                          : options_.milestone_tolerance;
+                                                         : options_.milestone_tolerance;
 }
 
 // The guide path ranks the nodes; the stance term only counts once the last milestone is the
@@ -55,8 +55,8 @@ double StanceSearch::Run::milestone_tolerance(int m) const {
 double StanceSearch::Run::cost(const SearchNode& node) const {
   const double d = guide_.size() > 0 ? guide_.distance_to(node.q(), t_) : 0.0;
   const bool final_approach = t_ + 1 >= guide_.size();
-  return d + (final_approach ? options_.stance_weight * stance_difference(node.stance(), goal_)
-                             : 0.0);
+  return d +
+         (final_approach ? options_.stance_weight * stance_difference(node.stance(), goal_) : 0.0);
 }
 
 // The goal stance, at the goal's stated placements.
@@ -103,8 +103,7 @@ void StanceSearch::Run::advance_milestones() {
       if (guide_.distance_to(n.q(), t_) <= milestone_tolerance(t_)) {
         ++t_;
         advanced = true;
-        if (!search_.publish(
-                node_event(SearchEventKind::Milestone, n, t_, int(tree_.size()))))
+        if (!search_.publish(node_event(SearchEventKind::Milestone, n, t_, int(tree_.size()))))
           return;
         break;
       }

@@ -8,10 +8,10 @@
 namespace stanceplan {
 
 struct SearchOptions {
-  int max_nodes = 2000;              // nodes expanded before giving up
-  double time_limit_s = 60.0;        // wall-clock budget
-  double milestone_tolerance = 0.15; // distance at which a milestone counts as reached
-  int threads = 0;                   // candidate solves in parallel; 0 = the number of cores
+  int max_nodes = 2000;               // nodes expanded before giving up
+  double time_limit_s = 60.0;         // wall-clock budget
+  double milestone_tolerance = 0.15;  // distance at which a milestone counts as reached
+  int threads = 0;                    // candidate solves in parallel; 0 = the number of cores
   // Pruning (candidates.h): surfaces farther apart than this are not offered as a new contact;
   // contacts between two surfaces of one entity only when self_contacts is true.
   double contact_reach = 0.45;
@@ -30,8 +30,8 @@ struct SearchOptions {
   // within these tolerances.
   double placement_tolerance = 0.03;    // m
   double orientation_tolerance = 0.15;  // rad
-  // Cost: distance to the targeted milestone, plus stance_weight x |stance xor goal stance| once the
-  // last milestone is the target.
+  // Cost: distance to the targeted milestone, plus stance_weight x |stance xor goal stance| once
+  // the last milestone is the target.
   double stance_weight = 0.1;
   // Backtracking: further attempts from other initial guesses per failed (node, candidate).
   int max_retries = 2;

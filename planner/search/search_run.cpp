@@ -90,8 +90,8 @@ std::optional<SearchResult> StanceSearch::Run::over_budget() {
     return give_up(PlanStatus::TimeBudget,
                    "no plan within " + std::to_string(options_.time_limit_s) + " s");
   if (result_.nodes_expanded >= options_.max_nodes)
-    return give_up(PlanStatus::NodeBudget, "no plan within " + std::to_string(options_.max_nodes) +
-                                               " expanded nodes");
+    return give_up(PlanStatus::NodeBudget,
+                   "no plan within " + std::to_string(options_.max_nodes) + " expanded nodes");
   return std::nullopt;
 }
 
@@ -129,8 +129,8 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
     SearchEvent e =
         candidate_event(a.node, next, a.candidate.add, a.candidate.contact, requests[i], r);
     if (r.status == PostureStatus::Solved) {
-      SearchNode child = make_node(a.node, requests[i], r, next,
-                                   a.candidate.add ? "add" : "remove", a.candidate.contact);
+      SearchNode child = make_node(a.node, requests[i], r, next, a.candidate.add ? "add" : "remove",
+                                   a.candidate.contact);
       child.milestone = t_;
       if (already_in_tree(child.stance(), child.placements)) {
         e.message = "already in the tree";
@@ -181,8 +181,8 @@ SearchResult StanceSearch::Run::found(int goal_node) {
   result_.plan.steps = plan_to_node(tree_, goal_node).steps;
   result_.closest_node = goal_node;
   result_.milestone = t_;
-  search_.publish(node_event(SearchEventKind::PlanFound, tree_[size_t(goal_node)], t_,
-                             int(tree_.size())));
+  search_.publish(
+      node_event(SearchEventKind::PlanFound, tree_[size_t(goal_node)], t_, int(tree_.size())));
   return finish(PlanStatus::Found,
                 "plan of " + std::to_string(result_.plan.steps.size()) + " steps");
 }

@@ -86,8 +86,8 @@ class StanceSearch::Run {
   SolverPool& pool_;
   SearchResult result_;
   std::vector<SearchNode>& tree_;
-  int t_ = 0;               // the targeted milestone
-  std::vector<int> open_;   // nodes not yet expanded
+  int t_ = 0;              // the targeted milestone
+  std::vector<int> open_;  // nodes not yet expanded
   // Backtracking queues: failed candidates that would add a goal contact are retried at once from
   // other initial guesses; the others when the open queue is empty.
   std::deque<Attempt> urgent_, retries_;

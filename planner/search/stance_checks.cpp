@@ -42,8 +42,8 @@ void check_stance(const Problem& problem, const std::vector<StanceContact>& stan
   what << std::fixed << std::setprecision(4);
   if (by_a && by_b)
     what << "the fixed placements of " << describe(problem, *by_a) << " and "
-         << describe(problem, *by_b) << " put " << a << " and " << b << " "
-         << -worst->distance << " m into each other";
+         << describe(problem, *by_b) << " put " << a << " and " << b << " " << -worst->distance
+         << " m into each other";
   else
     what << "the fixed placement of " << describe(problem, *by_a) << " puts " << a << " "
          << -worst->distance << " m into " << b;

@@ -10,12 +10,18 @@ namespace stanceplan {
 
 const char* to_string(PlanStatus status) {
   switch (status) {
-    case PlanStatus::Found: return "found";
-    case PlanStatus::Exhausted: return "exhausted";
-    case PlanStatus::NodeBudget: return "node budget";
-    case PlanStatus::TimeBudget: return "time budget";
-    case PlanStatus::Cancelled: return "cancelled";
-    case PlanStatus::InitialInfeasible: return "initial stance infeasible";
+    case PlanStatus::Found:
+      return "found";
+    case PlanStatus::Exhausted:
+      return "exhausted";
+    case PlanStatus::NodeBudget:
+      return "node budget";
+    case PlanStatus::TimeBudget:
+      return "time budget";
+    case PlanStatus::Cancelled:
+      return "cancelled";
+    case PlanStatus::InitialInfeasible:
+      return "initial stance infeasible";
   }
   return "?";
 }

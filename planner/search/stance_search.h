@@ -1,10 +1,10 @@
 #pragma once
 // The multi-contact stance planner of Bouyarmane & Kheddar, "Humanoid Robot Locomotion and
 // Manipulation Step Planning", Advanced Robotics 26(10), 2012 (docs/METHOD.md section 3,
-// Algorithm 1): a greedy best-first search over stances. Each candidate (add a contact: case 1; remove one:
-// case 2) is checked by the IK-statics solver; the cost is the distance to the targeted milestone
-// of the guide path. Adds loop avoidance, backtracking, budgets, cancellation, events and a step
-// gate. Deterministic: the plan does not depend on the thread count.
+// Algorithm 1): a greedy best-first search over stances. Each candidate (add a contact: case 1;
+// remove one: case 2) is checked by the IK-statics solver; the cost is the distance to the targeted
+// milestone of the guide path. Adds loop avoidance, backtracking, budgets, cancellation, events and
+// a step gate. Deterministic: the plan does not depend on the thread count.
 #include <atomic>
 #include <string>
 #include <vector>
@@ -34,14 +34,14 @@ struct SearchNode {
 struct SearchResult {
   PlanStatus status = PlanStatus::Exhausted;
   std::string message;
-  Plan plan;                      // the sequence, when found
+  Plan plan;  // the sequence, when found
   std::vector<SearchNode> tree;
-  int closest_node = -1;          // the node whose stance is closest to the goal's
-  int milestone = 0;              // milestones reached
+  int closest_node = -1;  // the node whose stance is closest to the goal's
+  int milestone = 0;      // milestones reached
   int nodes_expanded = 0;
   int solver_calls = 0;
   double wall_time_s = 0.0;
-  double solver_time_s = 0.0;     // summed over solves
+  double solver_time_s = 0.0;  // summed over solves
 };
 
 class SolverPool;

@@ -4,11 +4,16 @@ namespace stanceplan {
 
 const char* to_string(SearchEventKind kind) {
   switch (kind) {
-    case SearchEventKind::Expansion: return "expansion";
-    case SearchEventKind::Candidate: return "candidate";
-    case SearchEventKind::Milestone: return "milestone";
-    case SearchEventKind::PlanFound: return "plan_found";
-    case SearchEventKind::Failure: return "failure";
+    case SearchEventKind::Expansion:
+      return "expansion";
+    case SearchEventKind::Candidate:
+      return "candidate";
+    case SearchEventKind::Milestone:
+      return "milestone";
+    case SearchEventKind::PlanFound:
+      return "plan_found";
+    case SearchEventKind::Failure:
+      return "failure";
   }
   return "?";
 }

@@ -15,7 +15,7 @@ struct IpoptRun {
   std::string message;  // Ipopt's return status, by name
   int iterations = 0;
   double objective = 0.0;
-  Eigen::VectorXd x;    // the final iterate
+  Eigen::VectorXd x;              // the final iterate
   std::string derivative_report;  // Ipopt's derivative checker output (derivative_test only)
 };
 

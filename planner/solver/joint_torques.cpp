@@ -3,7 +3,9 @@
 namespace stanceplan {
 namespace {
 
-bool rotational(JointType type) { return type == JointType::Revolute || type == JointType::Continuous; }
+bool rotational(JointType type) {
+  return type == JointType::Revolute || type == JointType::Continuous;
+}
 
 // Derivative of the joint quantity h(a, o) through the motion of a joint's axis a and origin o
 // caused by every joint above it and by the floating root. dh_da, dh_do: partials of h.
@@ -19,8 +21,9 @@ void add_frame_motion(const Entity& entity, const ModelData& data, int above_lin
     if (!joint.movable()) continue;
     const Eigen::Vector3d& ak = data.axis_W[k];
     // A rotation about (ak, ok) turns a and moves o; a translation along ak moves o only.
-    double d = rotational(joint.type) ? dh_da.dot(ak.cross(a)) + dh_do.dot(ak.cross(o - data.origin_W[k]))
-                                      : dh_do.dot(ak);
+    double d = rotational(joint.type)
+                   ? dh_da.dot(ak.cross(a)) + dh_do.dot(ak.cross(o - data.origin_W[k]))
+                   : dh_do.dot(ak);
     dtau_dq[first_dof + joint.dof] += scale * joint.multiplier * d;
   }
   if (!entity.floating()) return;
@@ -37,7 +40,8 @@ void add_frame_motion(const Entity& entity, const ModelData& data, int above_lin
 void add_point_load_torque(const Entity& entity, const ModelData& data, int link,
                            const Eigen::Vector3d& p_W, const Eigen::Vector3d& f_W,
                            Eigen::Ref<Eigen::VectorXd> tau, Eigen::Ref<Eigen::MatrixXd> dtau_dq,
-                           Eigen::Ref<Eigen::MatrixXd> dtau_dp, Eigen::Ref<Eigen::MatrixXd> dtau_df) {
+                           Eigen::Ref<Eigen::MatrixXd> dtau_dp,
+                           Eigen::Ref<Eigen::MatrixXd> dtau_df) {
   const Model& model = *entity.model;
   for (int l = link; l > 0; l = model.links[l].parent_link) {
     const int j = model.links[l].parent_joint;
@@ -75,16 +79,17 @@ Eigen::Vector3d moment_about(const Model& model, const ModelData& data, int link
 
 }  // namespace
 
-void add_gravity_torque_values(const Entity& entity, const ModelData& data, const Eigen::Vector3d& g,
-                               Eigen::Ref<Eigen::VectorXd> tau) {
+void add_gravity_torque_values(const Entity& entity, const ModelData& data,
+                               const Eigen::Vector3d& g, Eigen::Ref<Eigen::VectorXd> tau) {
   const Model& model = *entity.model;
   for (int l = 1; l < model.num_links(); ++l) {
     const int j = model.links[l].parent_joint;
     const Joint& joint = model.joints[j];
     if (!joint.movable()) continue;
     const Eigen::Vector3d& a = data.axis_W[j];
-    tau[joint.dof] -= joint.multiplier * (rotational(joint.type) ? a.dot(moment_about(model, data, l, j).cross(g))
-                                                                 : model.subtree_mass[l] * a.dot(g));
+    tau[joint.dof] -=
+        joint.multiplier * (rotational(joint.type) ? a.dot(moment_about(model, data, l, j).cross(g))
+                                                   : model.subtree_mass[l] * a.dot(g));
   }
 }
 
@@ -106,12 +111,15 @@ void add_gravity_torques(const Entity& entity, const ModelData& data, const Eige
       for (int l = model.links[lj].parent_link; l > 0; l = model.links[l].parent_link) {
         const Joint& above = model.joints[model.links[l].parent_joint];
         if (above.movable() && rotational(above.type))
-          row[first_dof + above.dof] -= mj * above.multiplier * a.dot(r.cross(g.cross(data.axis_W[model.links[l].parent_joint])));
+          row[first_dof + above.dof] -=
+              mj * above.multiplier *
+              a.dot(r.cross(g.cross(data.axis_W[model.links[l].parent_joint])));
       }
       if (entity.floating())
         for (int i = 0; i < 4; ++i) {
           const Eigen::Matrix3d M = data.dR_WB_dquat[i] * data.R_WB.transpose();
-          row[Entity::kBaseQuaternion + i] -= mj * ((M * a).dot(r.cross(g)) + a.dot((M * r).cross(g)));
+          row[Entity::kBaseQuaternion + i] -=
+              mj * ((M * a).dot(r.cross(g)) + a.dot((M * r).cross(g)));
         }
     } else {
       const double m = model.subtree_mass[lj];
@@ -134,15 +142,17 @@ void add_gravity_torques(const Entity& entity, const ModelData& data, const Eige
     const int k = model.links[lk].parent_joint;
     const Joint& below = model.joints[k];
     if (!below.movable()) continue;
-    const Eigen::Vector3d dS = rotational(below.type)
-                                   ? Eigen::Vector3d(data.axis_W[k].cross(moment_about(model, data, lk, k)))
-                                   : Eigen::Vector3d(model.subtree_mass[lk] * data.axis_W[k]);
+    const Eigen::Vector3d dS =
+        rotational(below.type)
+            ? Eigen::Vector3d(data.axis_W[k].cross(moment_about(model, data, lk, k)))
+            : Eigen::Vector3d(model.subtree_mass[lk] * data.axis_W[k]);
     const Eigen::Vector3d dS_x_g = dS.cross(g);
     for (int l = lk; l > 0; l = model.links[l].parent_link) {
       const int j = model.links[l].parent_joint;
       const Joint& joint = model.joints[j];
       if (joint.movable() && rotational(joint.type))
-        dtau_dq(joint.dof, first_dof + below.dof) -= joint.multiplier * below.multiplier * data.axis_W[j].dot(dS_x_g);
+        dtau_dq(joint.dof, first_dof + below.dof) -=
+            joint.multiplier * below.multiplier * data.axis_W[j].dot(dS_x_g);
     }
   }
 }
@@ -156,8 +166,9 @@ void add_point_load_torque_value(const Entity& entity, const ModelData& data, in
     const Joint& joint = model.joints[j];
     if (!joint.movable()) continue;
     const Eigen::Vector3d& a = data.axis_W[j];
-    tau[joint.dof] -= joint.multiplier *
-                      (rotational(joint.type) ? a.dot((p_W - data.origin_W[j]).cross(f_W)) : a.dot(f_W));
+    tau[joint.dof] -=
+        joint.multiplier *
+        (rotational(joint.type) ? a.dot((p_W - data.origin_W[j]).cross(f_W)) : a.dot(f_W));
   }
 }
 

@@ -18,15 +18,16 @@ namespace stanceplan {
 void add_point_load_torque(const Entity& entity, const ModelData& data, int link,
                            const Eigen::Vector3d& p_W, const Eigen::Vector3d& f_W,
                            Eigen::Ref<Eigen::VectorXd> tau, Eigen::Ref<Eigen::MatrixXd> dtau_dq,
-                           Eigen::Ref<Eigen::MatrixXd> dtau_dp, Eigen::Ref<Eigen::MatrixXd> dtau_df);
+                           Eigen::Ref<Eigen::MatrixXd> dtau_dp,
+                           Eigen::Ref<Eigen::MatrixXd> dtau_df);
 
 // Gravity's contribution (E18, the -dC/dtheta^T m g term) from the subtree moments of
 // forward_kinematics: joint j holds M_l (c_l - o_j) x g for the subtree below it. With derivatives
 // with respect to the entity's configuration (dtau_dq: ndof x nq) in O(dofs x depth).
 void add_gravity_torques(const Entity& entity, const ModelData& data, const Eigen::Vector3d& g,
                          Eigen::Ref<Eigen::VectorXd> tau, Eigen::Ref<Eigen::MatrixXd> dtau_dq);
-void add_gravity_torque_values(const Entity& entity, const ModelData& data, const Eigen::Vector3d& g,
-                               Eigen::Ref<Eigen::VectorXd> tau);
+void add_gravity_torque_values(const Entity& entity, const ModelData& data,
+                               const Eigen::Vector3d& g, Eigen::Ref<Eigen::VectorXd> tau);
 
 // The torque contribution alone (no derivatives).
 void add_point_load_torque_value(const Entity& entity, const ModelData& data, int link,

@@ -10,10 +10,10 @@
 namespace stanceplan {
 
 struct ForceBlock {
-  int task = -1;           // index into PostureRequest::contacts
+  int task = -1;  // index into PostureRequest::contacts
   int first_column = 0;
   int num_vertices = 0;
-  int per_vertex = 0;      // K (unilateral) or 3 (bilateral)
+  int per_vertex = 0;  // K (unilateral) or 3 (bilateral)
   bool bilateral = false;
   int size() const { return num_vertices * per_vertex; }
 };

@@ -6,10 +6,14 @@ namespace stanceplan {
 
 const char* to_string(PostureStatus status) {
   switch (status) {
-    case PostureStatus::Solved: return "solved";
-    case PostureStatus::Infeasible: return "infeasible";
-    case PostureStatus::IterationLimit: return "iteration_limit";
-    case PostureStatus::NumericalFailure: return "numerical_failure";
+    case PostureStatus::Solved:
+      return "solved";
+    case PostureStatus::Infeasible:
+      return "infeasible";
+    case PostureStatus::IterationLimit:
+      return "iteration_limit";
+    case PostureStatus::NumericalFailure:
+      return "numerical_failure";
   }
   return "?";
 }
@@ -29,11 +33,13 @@ std::string PostureResult::non_finite_part() const {
   for (int i = 0; i < q.size(); ++i)
     if (!std::isfinite(q[i])) return "q[" + std::to_string(i) + "]";
   for (size_t i = 0; i < forces.size(); ++i)
-    if (!forces[i].force_W.allFinite() || !forces[i].point_W.allFinite()) return "force " + std::to_string(i);
+    if (!forces[i].force_W.allFinite() || !forces[i].point_W.allFinite())
+      return "force " + std::to_string(i);
   for (size_t e = 0; e < torques.size(); ++e)
     if (!torques[e].allFinite()) return "torques of entity " + std::to_string(e);
   for (size_t i = 0; i < placements.size(); ++i)
-    if (!std::isfinite(placements[i].x) || !std::isfinite(placements[i].y) || !std::isfinite(placements[i].theta))
+    if (!std::isfinite(placements[i].x) || !std::isfinite(placements[i].y) ||
+        !std::isfinite(placements[i].theta))
       return "placement " + std::to_string(i);
   return "";
 }

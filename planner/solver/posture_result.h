@@ -23,11 +23,12 @@ struct VertexForce {
 
 struct PostureResult {
   PostureStatus status = PostureStatus::NumericalFailure;
-  std::string message;             // Ipopt's status and, when not solved, the worst family
-  Eigen::VectorXd q;               // the final iterate (meaningful when solved)
+  std::string message;  // Ipopt's status and, when not solved, the worst family
+  Eigen::VectorXd q;    // the final iterate (meaningful when solved)
   std::vector<VertexForce> forces;
-  std::vector<Eigen::VectorXd> torques;  // per entity: actuation torque of every dof (empty if none)
-  std::vector<Placement> placements;     // per request contact: realised placement of s1 in s2
+  std::vector<Eigen::VectorXd>
+      torques;                        // per entity: actuation torque of every dof (empty if none)
+  std::vector<Placement> placements;  // per request contact: realised placement of s1 in s2
   int iterations = 0;
   double time_ms = 0.0;
   double objective = 0.0;

@@ -88,8 +88,7 @@ double collision_bound(double distance_at_guess, double margin) {
 // Infeasible result naming the pair furthest below its bound, or nullopt when every one keeps it.
 std::optional<PostureResult> pinned_pair_collision(const Scene& scene,
                                                    const PostureRequest& request,
-                                                   std::span<const ModelData> data,
-                                                   double margin) {
+                                                   std::span<const ModelData> data, double margin) {
   const std::vector<PinnedPairDistance> now = pinned_pair_distances(scene, request, data);
   if (now.empty()) return std::nullopt;
   const std::vector<PinnedPairDistance> guess =
@@ -114,8 +113,8 @@ std::optional<PostureResult> pinned_pair_collision(const Scene& scene,
       << ") and " << collision_link_name(scene, pair.b) << " (" << pinned_by(d.contact_b)
       << ") are " << std::fixed << std::setprecision(4)
       << (d.distance < 0 ? -d.distance : d.distance)
-      << (d.distance < 0 ? " m into each other" : " m apart") << ", at least "
-      << d.distance + worst << " m apart expected; fixed placements leave no freedom to part them";
+      << (d.distance < 0 ? " m into each other" : " m apart") << ", at least " << d.distance + worst
+      << " m apart expected; fixed placements leave no freedom to part them";
   PostureResult result;
   result.status = PostureStatus::Infeasible;
   result.message = out.str();
@@ -443,9 +442,9 @@ PostureResult PostureSolver::solve_with(const PostureRequest& request,
   }
   // ... and checked again on the solution, where the placements hold to the solver's tolerance.
   if (result.status == PostureStatus::Solved && collisions)
-    if (auto failed = pinned_pair_collision(scene_, request,
-                                            system_kinematics(scene_.system, result.q),
-                                            options.collision_margin)) {
+    if (auto failed =
+            pinned_pair_collision(scene_, request, system_kinematics(scene_.system, result.q),
+                                  options.collision_margin)) {
       failed->q = result.q;
       failed->iterations = result.iterations;
       failed->time_ms = result.time_ms;
@@ -527,9 +526,9 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     // Pairs outside the active set may have come closer than the margin: add them.
     const size_t before = active.size();
     if (collisions) {
-      const double worst = grow_collision_set(
-          pair_distances(scene_, result.q, excluded, options.collision_margin), bounds_of_all(),
-          active);
+      const double worst =
+          grow_collision_set(pair_distances(scene_, result.q, excluded, options.collision_margin),
+                             bounds_of_all(), active);
       result.residuals["collision"] = std::max(result.residuals["collision"], worst);
     }
     // Torques beyond a limit left out: add those rows, and the ones near their limits.

@@ -41,7 +41,8 @@ bool read_all(int fd, char* data, size_t n) {
 
 bool send(int fd, const std::string& message) {
   const uint64_t n = message.size();
-  return write_all(fd, reinterpret_cast<const char*>(&n), sizeof n) && write_all(fd, message.data(), n);
+  return write_all(fd, reinterpret_cast<const char*>(&n), sizeof n) &&
+         write_all(fd, message.data(), n);
 }
 
 bool receive(int fd, std::string* message) {
@@ -64,7 +65,8 @@ SolverPool::SolverPool(const PostureSolver& solver, int processes) : solver_(sol
   if (processes <= 1) return;
   // A worker that died must not take the planner with it when the pool writes to its pipe.
   signal(SIGPIPE, SIG_IGN);
-  void* shared = mmap(nullptr, sizeof(std::atomic<bool>), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  void* shared = mmap(nullptr, sizeof(std::atomic<bool>), PROT_READ | PROT_WRITE,
+                      MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (shared == MAP_FAILED) return;  // no pool: solve_all runs in this process
   shared_cancel_ = new (shared) std::atomic<bool>(false);
   for (int i = 0; i < processes; ++i) workers_.push_back(spawn());
@@ -154,8 +156,8 @@ std::vector<PostureResult> SolverPool::solve_all(const std::vector<PostureReques
   if (workers_.empty()) {
     for (size_t i = 0; i < requests.size(); ++i)
       results[i] = cancelled() ? failure("cancelled")
-                   : cancel   ? solver_.solve(requests[i], cancel)  // running solves stop too
-                              : solver_.solve(requests[i]);
+                   : cancel    ? solver_.solve(requests[i], cancel)  // running solves stop too
+                               : solver_.solve(requests[i]);
     return results;
   }
   shared_cancel_->store(false);

@@ -8,9 +8,9 @@
 // request and is replaced. The pool ignores SIGPIPE
 // process-wide (a write to a dead worker's pipe must fail, not end the planner). Results come back
 // in request order: the caller's behaviour does not depend on the number of processes.
+#include <sys/types.h>
 #include <atomic>
 #include <string>
-#include <sys/types.h>
 #include <vector>
 
 #include "planner/solver/posture_solver.h"

@@ -11,7 +11,9 @@ namespace {
 class Writer {
  public:
   template <class T>
-  void pod(const T& v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof(T)); }
+  void pod(const T& v) {
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
+  }
   void text(const std::string& s) {
     pod<uint64_t>(s.size());
     bytes.append(s);
@@ -20,10 +22,16 @@ class Writer {
     pod<uint64_t>(v.size());
     bytes.append(reinterpret_cast<const char*>(v.data()), sizeof(double) * v.size());
   }
-  void vec3(const Eigen::Vector3d& v) { for (int i = 0; i < 3; ++i) pod(v[i]); }
+  void vec3(const Eigen::Vector3d& v) {
+    for (int i = 0; i < 3; ++i) pod(v[i]);
+  }
   void placement(const std::optional<Placement>& p) {
     pod<uint8_t>(p.has_value());
-    if (p) { pod(p->x); pod(p->y); pod(p->theta); }
+    if (p) {
+      pod(p->x);
+      pod(p->y);
+      pod(p->theta);
+    }
   }
   std::string bytes;
 };
@@ -52,7 +60,11 @@ class Reader {
     for (uint64_t i = 0; i < n; ++i) v[i] = pod<double>();
     return v;
   }
-  Eigen::Vector3d vec3() { Eigen::Vector3d v; for (int i = 0; i < 3; ++i) v[i] = pod<double>(); return v; }
+  Eigen::Vector3d vec3() {
+    Eigen::Vector3d v;
+    for (int i = 0; i < 3; ++i) v[i] = pod<double>();
+    return v;
+  }
   std::optional<Placement> placement() {
     if (!pod<uint8_t>()) return std::nullopt;
     Placement p;
@@ -73,7 +85,8 @@ std::string serialize(const PostureRequest& request) {
   Writer w;
   w.pod<uint64_t>(request.contacts.size());
   for (const ContactTask& t : request.contacts) {
-    for (int v : {t.contact.s1.entity, t.contact.s1.index, t.contact.s2.entity, t.contact.s2.index}) w.pod<int32_t>(v);
+    for (int v : {t.contact.s1.entity, t.contact.s1.index, t.contact.s2.entity, t.contact.s2.index})
+      w.pod<int32_t>(v);
     w.pod<uint8_t>(t.contact.bilateral);
     w.pod<uint8_t>(t.contact.fixed);
     w.pod<uint8_t>(t.loaded);

@@ -69,6 +69,8 @@ std::string step_caption(const PlanView& plan, int step) {
   return caption;
 }
 
-std::string plan_title(const PlanView& plan) { return plan.name; }
+std::string plan_title(const PlanView& plan) {
+  return plan.name;
+}
 
 }  // namespace stanceplan::render

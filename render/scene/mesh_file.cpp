@@ -15,9 +15,9 @@ LoadedMesh load_mesh_file(const std::string& path, const Eigen::Vector3d& scale)
   std::vector<std::uint32_t> indices;
   indices.reserve(3 * file.triangles.size());
   for (const Eigen::Vector3i& t : file.triangles) {
-    indices.insert(indices.end(), {static_cast<std::uint32_t>(t[0]),
-                                   static_cast<std::uint32_t>(t[1]),
-                                   static_cast<std::uint32_t>(t[2])});
+    indices.insert(indices.end(),
+                   {static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                    static_cast<std::uint32_t>(t[2])});
   }
   LoadedMesh out;
   out.has_material_colors = !file.colors.empty();

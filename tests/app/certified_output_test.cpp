@@ -68,8 +68,8 @@ TEST_F(CertifiedOutput, APlanWithALinkMovedIntoAnotherIsNotWritten) {
   EXPECT_FALSE(std::filesystem::exists(path("bad.json")));
   EXPECT_THAT(err.str(), HasSubstr("stanceplan: certification failed: interpenetration at step 5: "
                                    "robot/waist and robot/l_elbow_p_link ("));
-  EXPECT_THAT(err.str(), HasSubstr("the plan fails certification from step 5; " +
-                                   path("bad.json") + " not written"));
+  EXPECT_THAT(err.str(), HasSubstr("the plan fails certification from step 5; " + path("bad.json") +
+                                   " not written"));
 }
 
 TEST_F(CertifiedOutput, PartialWritesOnlyTheCertifiedPrefix) {

@@ -18,13 +18,16 @@ using nlohmann::json;
 using ::testing::HasSubstr;
 
 using test::CliResult;
-CliResult run(std::vector<std::string> args) { return test::run_cli(std::move(args)); }
+CliResult run(std::vector<std::string> args) {
+  return test::run_cli(std::move(args));
+}
 
 class Certify : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     path_ = new std::string((test::temp_dir("certify") / "certify_walk.json").string());
-    const CliResult r = run({"plan", test::source_path("scenarios/humanoid_walk.yaml"), "--out", *path_, "--threads", "1"});
+    const CliResult r = run({"plan", test::source_path("scenarios/humanoid_walk.yaml"), "--out",
+                             *path_, "--threads", "1"});
     ASSERT_EQ(r.code, 0) << r.err;
     std::ifstream in(*path_);
     plan_ = new json(json::parse(in));
@@ -34,7 +37,8 @@ class Certify : public ::testing::Test {
     delete path_;
   }
   // Writes a tampered copy and certifies it.
-  static CliResult certify_modified(const std::function<void(json&)>& change, const std::string& name) {
+  static CliResult certify_modified(const std::function<void(json&)>& change,
+                                    const std::string& name) {
     json copy = *plan_;
     change(copy);
     const std::string path = (test::temp_dir("certify") / ("tampered_" + name + ".json")).string();
@@ -55,15 +59,19 @@ TEST_F(Certify, TheRealPlanPasses) {
 }
 
 TEST_F(Certify, AJointPastItsLimitFails) {
-  const CliResult r = certify_modified([](json& p) { p["steps"][3]["configuration"]["robot"]["joints"]["l_knee_p"] = 2.7; }, "limit");
+  const CliResult r = certify_modified(
+      [](json& p) { p["steps"][3]["configuration"]["robot"]["joints"]["l_knee_p"] = 2.7; },
+      "limit");
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("certification failed: joint limits at step 3: robot/l_knee_p"));
 }
 
 TEST_F(Certify, AForceScaledByTwoFails) {
-  const CliResult r = certify_modified([](json& p) {
-    for (auto& v : p["steps"][2]["forces"][0]["force_world"]) v = v.get<double>() * 2.0;
-  }, "force");
+  const CliResult r = certify_modified(
+      [](json& p) {
+        for (auto& v : p["steps"][2]["forces"][0]["force_world"]) v = v.get<double>() * 2.0;
+      },
+      "force");
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("certification failed: equilibrium force at step 2: robot"));
 }
@@ -75,22 +83,26 @@ TEST_F(Certify, AStepRemovedFromTheSequenceFails) {
 }
 
 TEST_F(Certify, AContactSurfaceMovedFiveCentimetresOffFails) {
-  const CliResult r = certify_modified([](json& p) {
-    for (auto& s : p["surfaces"])
-      if (s["id"] == "robot/l_sole") {
-        for (auto& v : s["vertices"]) v[2] = v[2].get<double>() + 0.05;  // 5 cm into the foot
-        s["origin"][2] = s["origin"][2].get<double>() + 0.05;
-      }
-  }, "vertex");
+  const CliResult r = certify_modified(
+      [](json& p) {
+        for (auto& s : p["surfaces"])
+          if (s["id"] == "robot/l_sole") {
+            for (auto& v : s["vertices"]) v[2] = v[2].get<double>() + 0.05;  // 5 cm into the foot
+            s["origin"][2] = s["origin"][2].get<double>() + 0.05;
+          }
+      },
+      "vertex");
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("certification failed: contact plane at step"));
 }
 
 TEST_F(Certify, AForcePointMovedOffItsVertexFails) {
-  const CliResult r = certify_modified([](json& p) {
-    auto& point = p["steps"][1]["forces"][2]["point_world"];
-    point[0] = point[0].get<double>() + 0.05;
-  }, "point");
+  const CliResult r = certify_modified(
+      [](json& p) {
+        auto& point = p["steps"][1]["forces"][2]["point_world"];
+        point[0] = point[0].get<double>() + 0.05;
+      },
+      "point");
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("certification failed: force points at step 1"));
 }
@@ -102,8 +114,9 @@ TEST_F(Certify, AnUnreadablePlanIsBadInput) {
 }
 
 TEST(PlanCommand, AnUnreachableGoalExitsTwoWithAReason) {
-  const CliResult r = run({"plan", test::source_path("tests/data/high_platform/unreachable.yaml"), "--out",
-                           (test::temp_dir("certify") / "unreachable.json").string(), "--max-nodes", "4"});
+  const CliResult r =
+      run({"plan", test::source_path("tests/data/high_platform/unreachable.yaml"), "--out",
+           (test::temp_dir("certify") / "unreachable.json").string(), "--max-nodes", "4"});
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("stanceplan: no plan found ("));
   EXPECT_THAT(r.err, HasSubstr("closest stance to the goal: {"));
@@ -119,8 +132,9 @@ namespace {
 TEST(PlanCommand, SigintStopsTheSearchCleanly) {
   const std::string out = (test::temp_dir("sigint") / "plan.json").string();
   const std::string command = std::string(STANCEPLAN_BINARY) + " plan " +
-                              test::source_path("tests/data/high_platform/unreachable.yaml") + " --out " + out +
-                              " --max-nodes 1000 2> " + out + ".err & pid=$!; sleep 1; kill -INT $pid; wait $pid";
+                              test::source_path("tests/data/high_platform/unreachable.yaml") +
+                              " --out " + out + " --max-nodes 1000 2> " + out +
+                              ".err & pid=$!; sleep 1; kill -INT $pid; wait $pid";
   const int status = std::system(("bash -c '" + command + "'").c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
@@ -140,15 +154,16 @@ namespace {
 // when stdout is a file (fully buffered).
 TEST(PlanCommand, OutputBeforeTheWorkersForkIsWrittenOnce) {
   const std::filesystem::path dir = test::temp_dir("fork_output");
-  const std::string command = std::string(STANCEPLAN_BINARY) + " " +
-                              test::source_path("scenarios/humanoid_walk.yaml") + " --headless --threads 2 --out " +
-                              (dir / "out").string() + " --no-rejected-snapshots > " + (dir / "stdout.txt").string() +
-                              " 2>&1";
+  const std::string command =
+      std::string(STANCEPLAN_BINARY) + " " + test::source_path("scenarios/humanoid_walk.yaml") +
+      " --headless --threads 2 --out " + (dir / "out").string() + " --no-rejected-snapshots > " +
+      (dir / "stdout.txt").string() + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0);
   std::ifstream in(dir / "stdout.txt");
   const std::string text((std::istreambuf_iterator<char>(in)), {});
   size_t count = 0;
-  for (size_t at = text.find("stanceplan: planning"); at != std::string::npos; at = text.find("stanceplan: planning", at + 1))
+  for (size_t at = text.find("stanceplan: planning"); at != std::string::npos;
+       at = text.find("stanceplan: planning", at + 1))
     ++count;
   EXPECT_EQ(count, 1u) << text;
 }

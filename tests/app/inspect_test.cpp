@@ -16,12 +16,14 @@ namespace {
 using ::testing::HasSubstr;
 
 using test::CliResult;
-CliResult run(std::vector<std::string> args) { return test::run_cli(std::move(args)); }
+CliResult run(std::vector<std::string> args) {
+  return test::run_cli(std::move(args));
+}
 
 TEST(Inspect, TalosJson) {
   STANCEPLAN_REQUIRE_SHARED("robots/talos");
-  const CliResult r = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
-                           "--kind", "floating", "--json"});
+  const CliResult r = run({"inspect", test::talos_urdf(), "--package-path",
+                           test::talos_package_dir(), "--kind", "floating", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto d = nlohmann::json::parse(r.out);
   EXPECT_EQ(d["name"], "talos");
@@ -30,7 +32,8 @@ TEST(Inspect, TalosJson) {
   EXPECT_EQ(d["floating"], true);
   ASSERT_EQ(d["joints"].size(), 32u);
   for (const auto& j : d["joints"]) {
-    for (const char* key : {"name", "type", "lower", "upper", "effort"}) EXPECT_TRUE(j.contains(key)) << key;
+    for (const char* key : {"name", "type", "lower", "upper", "effort"})
+      EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_GT(j["effort"].get<double>(), 0.0) << j["name"];
   }
   EXPECT_EQ(d["links"].size(), 60u);
@@ -40,13 +43,15 @@ TEST(Inspect, TalosJson) {
 TEST(Inspect, TalosCollisionObjectsAreBuiltAndTheSrdfDisablesPairs) {
   STANCEPLAN_REQUIRE_SHARED("robots/talos");
   const std::string srdf = test::shared_path("robots/talos/robots/talos_data/srdf/talos.srdf");
-  const CliResult with = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
-                              "--kind", "floating", "--srdf", srdf, "--json"});
-  const CliResult without = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(),
-                                 "--kind", "floating", "--json"});
+  const CliResult with =
+      run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir(), "--kind",
+           "floating", "--srdf", srdf, "--json"});
+  const CliResult without = run({"inspect", test::talos_urdf(), "--package-path",
+                                 test::talos_package_dir(), "--kind", "floating", "--json"});
   ASSERT_EQ(with.code, 0) << with.err;
   ASSERT_EQ(without.code, 0) << without.err;
-  const auto a = nlohmann::json::parse(with.out)["collision"], b = nlohmann::json::parse(without.out)["collision"];
+  const auto a = nlohmann::json::parse(with.out)["collision"],
+             b = nlohmann::json::parse(without.out)["collision"];
   EXPECT_GT(a["mesh_hulls"].get<int>(), 30);
   EXPECT_GT(a["srdf_disabled_pairs"].get<int>(), 0);
   EXPECT_LT(a["candidate_pairs"].get<int>(), b["candidate_pairs"].get<int>());
@@ -55,7 +60,8 @@ TEST(Inspect, TalosCollisionObjectsAreBuiltAndTheSrdfDisablesPairs) {
 
 TEST(Inspect, PandaJsonListsPrismaticAndMimicJoints) {
   STANCEPLAN_REQUIRE_SHARED("robots/panda");
-  const CliResult r = run({"inspect", test::panda_urdf(), "--package-path", test::panda_package_dir(), "--json"});
+  const CliResult r =
+      run({"inspect", test::panda_urdf(), "--package-path", test::panda_package_dir(), "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto d = nlohmann::json::parse(r.out);
   EXPECT_EQ(d["dof"], 8);
@@ -69,7 +75,8 @@ TEST(Inspect, PandaJsonListsPrismaticAndMimicJoints) {
 
 TEST(Inspect, TextOutputSummarisesTheModel) {
   STANCEPLAN_REQUIRE_SHARED("robots/talos");
-  const CliResult r = run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir()});
+  const CliResult r =
+      run({"inspect", test::talos_urdf(), "--package-path", test::talos_package_dir()});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("actuated dofs: 32   mass: 90.2722 kg   links: 60"));
   EXPECT_THAT(r.out, HasSubstr("leg_left_4_joint"));

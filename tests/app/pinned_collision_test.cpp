@@ -24,8 +24,9 @@ std::string overlapping_soles(const std::string& name, const std::string& collis
   std::ifstream in(test::source_path("scenarios/humanoid_stand.yaml"));
   std::string text((std::istreambuf_iterator<char>(in)), {});
   text = std::regex_replace(text, std::regex("\\.\\./assets"), test::source_path("assets"));
-  const std::string both = "    - {s1: robot/l_sole, s2: env/floor, placement: [0, 0, 0]}\n"
-                           "    - {s1: robot/r_sole, s2: env/floor, placement: [0, 0, 0]}";
+  const std::string both =
+      "    - {s1: robot/l_sole, s2: env/floor, placement: [0, 0, 0]}\n"
+      "    - {s1: robot/r_sole, s2: env/floor, placement: [0, 0, 0]}";
   text = std::regex_replace(text,
                             std::regex("initial:\\n    - \\{s1: robot/l_sole, s2: env/floor\\}\\n"
                                        "    - \\{s1: robot/r_sole, s2: env/floor\\}"),
@@ -62,11 +63,13 @@ TEST(PinnedCollision, PlanRefusesTheScenarioWithFileContactsAndDepth) {
   const test::CliResult r = test::run_cli({"plan", scenario, "--out", out});
   EXPECT_EQ(r.code, 1) << r.err;
   // Line 22: the second entry of stances.initial.
-  EXPECT_THAT(r.err, MatchesRegex("stanceplan: error: " + std::regex_replace(scenario, std::regex("\\."), "\\.") +
-                                  ":22: stances\\.initial\\[1\\]: the fixed placements of "
-                                  "stances\\.initial\\[0\\] \\(robot/l_sole on env/floor\\) and "
-                                  "stances\\.initial\\[1\\] \\(robot/r_sole on env/floor\\) put "
-                                  "robot/l_foot and robot/r_foot 0\\.[0-9]{4} m into each other\n"));
+  EXPECT_THAT(
+      r.err,
+      MatchesRegex("stanceplan: error: " + std::regex_replace(scenario, std::regex("\\."), "\\.") +
+                   ":22: stances\\.initial\\[1\\]: the fixed placements of "
+                   "stances\\.initial\\[0\\] \\(robot/l_sole on env/floor\\) and "
+                   "stances\\.initial\\[1\\] \\(robot/r_sole on env/floor\\) put "
+                   "robot/l_foot and robot/r_foot 0\\.[0-9]{4} m into each other\n"));
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -261,7 +261,8 @@ TEST(Figures, KeyStepsShowEveryFirstContactAndSpreadTheRest) {
 
 TEST(Figures, FirstContactStepsAreTheFirstUseOfASurface) {
   const SurfaceRef foot_l{0, 0}, foot_r{0, 1}, hand{0, 2}, floor{1, 0}, wall{1, 1};
-  auto step = [](std::vector<Contact> contacts, std::string action, std::optional<Contact> changed) {
+  auto step = [](std::vector<Contact> contacts, std::string action,
+                 std::optional<Contact> changed) {
     PlanStep s;
     s.stance = Stance(std::move(contacts));
     s.action = std::move(action);
@@ -270,8 +271,12 @@ TEST(Figures, FirstContactStepsAreTheFirstUseOfASurface) {
   };
   const Contact l{foot_l, floor}, r{foot_r, floor}, h{hand, wall};
   Plan plan;
-  plan.steps = {step({l, r}, "initial", std::nullopt), step({l}, "remove", r), step({l, r}, "add", r),
-                step({l, r, h}, "add", h), step({l, r}, "remove", h), step({l, r, h}, "add", h)};
+  plan.steps = {step({l, r}, "initial", std::nullopt),
+                step({l}, "remove", r),
+                step({l, r}, "add", r),
+                step({l, r, h}, "add", h),
+                step({l, r}, "remove", h),
+                step({l, r, h}, "add", h)};
   EXPECT_EQ(first_contact_steps(plan), (std::vector<int>{3}));  // the hand, the first time only
 }
 

@@ -89,8 +89,7 @@ TEST(SrdfFaults, NotAnSrdfAndAMissingFileAreNamed) {
       posture_error("not_srdf", not_srdf),
       "stanceplan: error: " + not_srdf + ": not an SRDF file: the root element must be <robot>\n");
   const std::string absent = (test::temp_dir("srdf_faults") / "absent.srdf").string();
-  EXPECT_EQ(posture_error("absent", absent),
-            "stanceplan: error: " + absent + ": no such file\n");
+  EXPECT_EQ(posture_error("absent", absent), "stanceplan: error: " + absent + ": no such file\n");
   const std::string empty = srdf_file("empty.srdf", "");
   EXPECT_THAT(posture_error("empty", empty), HasSubstr("stanceplan: error: " + empty + ":"));
 }

@@ -26,7 +26,8 @@ TEST(HumanoidSitDesk, PlansWalksSitsAndCertifies) {
   write_plan(result.plan, scenario, path);
   const CertifyReport report = certify(read_plan(path));
   for (const CheckResult& c : report.checks)
-    EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": " << c.detail;
+    EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": "
+                            << c.detail;
 
   // Walking (every step before the first thigh lands) uses the soles only, as the guide's walking
   // milestones state; then the thighs land before the forearms, which come last.
@@ -37,13 +38,15 @@ TEST(HumanoidSitDesk, PlansWalksSitsAndCertifies) {
   for (size_t i = 1; i < steps.size() && first_thigh == 0; ++i)
     if (changed(i).find("_thigh") != std::string::npos) first_thigh = i;
   ASSERT_GT(first_thigh, 10u) << "the robot walks about 2 m before it sits";
-  for (size_t i = 1; i < first_thigh; ++i) EXPECT_NE(changed(i).find("_sole"), std::string::npos) << i << " " << changed(i);
+  for (size_t i = 1; i < first_thigh; ++i)
+    EXPECT_NE(changed(i).find("_sole"), std::string::npos) << i << " " << changed(i);
   ASSERT_GE(steps.size(), 3u);
   const std::set<std::string> last_two = {changed(steps.size() - 1), changed(steps.size() - 2)};
   EXPECT_EQ(last_two, (std::set<std::string>{"robot/l_forearm", "robot/r_forearm"}));
   EXPECT_EQ(steps.back().stance.size(), 6);
 
-  // Seated: the waist is above the seat (x 1.295 to 1.745 m, top at z = 0.42 m), in front of the desk.
+  // Seated: the waist is above the seat (x 1.295 to 1.745 m, top at z = 0.42 m), in front of the
+  // desk.
   const Eigen::VectorXd& q = steps.back().q;
   EXPECT_GT(q[0], 1.295);
   EXPECT_LT(q[0], 1.745);

@@ -19,7 +19,9 @@
 
 namespace stanceplan::test {
 inline std::atomic<long> g_allocations{0};
-inline long allocations() { return g_allocations.load(); }
+inline long allocations() {
+  return g_allocations.load();
+}
 inline constexpr bool kCountsAllocations = STANCEPLAN_COUNT_ALLOCATIONS;
 }  // namespace stanceplan::test
 

@@ -42,8 +42,8 @@ inline bool shared_required() {
 // A folder of this test process's own under the system's temporary folder: CTest runs every test
 // case as a separate process, in parallel, so fixed temporary paths would race.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("stanceplan_" + std::to_string(getpid())) / name;
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("stanceplan_" + std::to_string(getpid())) / name;
   std::filesystem::create_directories(dir);
   return dir;
 }
@@ -51,11 +51,15 @@ inline std::filesystem::path temp_dir(const std::string& name) {
 inline std::string talos_urdf() {
   return shared_path("robots/talos/robots/talos_data/robots/talos_reduced.urdf");
 }
-inline std::string talos_package_dir() { return shared_path("robots/talos"); }
+inline std::string talos_package_dir() {
+  return shared_path("robots/talos");
+}
 inline std::string panda_urdf() {
   return shared_path("robots/panda/robots/panda_description/urdf/panda.urdf");
 }
-inline std::string panda_package_dir() { return shared_path("robots/panda"); }
+inline std::string panda_package_dir() {
+  return shared_path("robots/panda");
+}
 
 }  // namespace stanceplan::test
 

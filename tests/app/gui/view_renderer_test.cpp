@@ -1,6 +1,6 @@
 // The render thread of the 3-D view and the panel's exports, off-screen (OSMesa: no display).
-#include "app/pipeline.h"
 #include "app/gui/view_renderer.h"
+#include "app/pipeline.h"
 
 #include <gtest/gtest.h>
 
@@ -103,9 +103,8 @@ TEST_F(ViewRendererTest, ExportsTheViewAndTheStripOfThePlanFound) {
   EXPECT_EQ(exported.width, 320);
   EXPECT_EQ(exported.height, 200);
   const render::Image strip = render::read_png((dir / "strip.png").string());
-  const render::Image expected =
-      render::render_strip(app::plan_view(scenario_, *plan), render::StripOptions{},
-                           render::SequenceOptions{}, meshes_);
+  const render::Image expected = render::render_strip(
+      app::plan_view(scenario_, *plan), render::StripOptions{}, render::SequenceOptions{}, meshes_);
   EXPECT_EQ(strip.width, expected.width);
   EXPECT_EQ(strip.height, expected.height);
 }

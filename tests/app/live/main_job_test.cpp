@@ -41,11 +41,9 @@ TEST(MainJob, AMissingScenarioIsBadInput) {
   const test::CliResult r =
       test::run_cli({"/nonexistent/scenario.yaml", "--headless", "--out", out.string()});
   EXPECT_EQ(r.code, 1);
-  EXPECT_EQ(r.err,
-            "stanceplan: error: /nonexistent/scenario.yaml: no such file\n");
+  EXPECT_EQ(r.err, "stanceplan: error: /nonexistent/scenario.yaml: no such file\n");
   EXPECT_FALSE(fs::exists(out)) << "nothing is written for bad input";
 }
-
 
 TEST(MainJob, TheDefaultScenarioIsFoundFromTheBuildWhateverTheCurrentFolder) {
   const fs::path before = fs::current_path();

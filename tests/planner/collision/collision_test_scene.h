@@ -15,8 +15,8 @@
 #include "planner/collision/collision_model.h"
 #include "planner/collision/signed_distance.h"
 #include "planner/model/kinematics.h"
-#include "tests/support/paths.h"
 #include "planner/model/urdf_loader.h"
+#include "tests/support/paths.h"
 
 namespace stanceplan::test {
 

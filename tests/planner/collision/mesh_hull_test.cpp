@@ -175,8 +175,7 @@ TEST(MeshLoader, MissingFileIsAnInputErrorNamingThePath) {
 }
 
 TEST(MeshLoader, UnreadableFileIsAnInputErrorNamingThePath) {
-  const std::filesystem::path path =
-      test::temp_dir("collision") / "garbage.stl";
+  const std::filesystem::path path = test::temp_dir("collision") / "garbage.stl";
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path) << "this is not a mesh\n";
   try {

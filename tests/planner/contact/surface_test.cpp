@@ -19,7 +19,8 @@ namespace {
 using ::testing::HasSubstr;
 
 std::vector<Eigen::Vector3d> square(double z, bool ccw_about_minus_z) {
-  std::vector<Eigen::Vector3d> v = {{0.1, 0.05, z}, {-0.1, 0.05, z}, {-0.1, -0.05, z}, {0.1, -0.05, z}};
+  std::vector<Eigen::Vector3d> v = {
+      {0.1, 0.05, z}, {-0.1, 0.05, z}, {-0.1, -0.05, z}, {0.1, -0.05, z}};
   if (ccw_about_minus_z) std::reverse(v.begin(), v.end());
   return v;
 }
@@ -34,8 +35,8 @@ std::string make_error(const std::vector<Eigen::Vector3d>& v, const Eigen::Vecto
 TEST(Surface, SoleFrameAndPolygon) {
   Surface s;
   std::string error;
-  ASSERT_TRUE(make_surface("sole", 0, "foot", square(-0.1, true), Eigen::Vector3d(0, 0, -1), nullptr,
-                           &s, &error))
+  ASSERT_TRUE(make_surface("sole", 0, "foot", square(-0.1, true), Eigen::Vector3d(0, 0, -1),
+                           nullptr, &s, &error))
       << error;
   EXPECT_TRUE(s.normal_L().isApprox(Eigen::Vector3d(0, 0, -1)));
   EXPECT_TRUE(s.T_LS.linear().col(0).isApprox(Eigen::Vector3d(1, 0, 0)));  // link x, projected
@@ -61,7 +62,8 @@ TEST(Surface, NonPlanarIsRejected) {
 
 TEST(Surface, NonConvexIsRejected) {
   std::vector<Eigen::Vector3d> v = {{0, 0, 0}, {1, 0, 0}, {0.3, 0.3, 0}, {1, 1, 0}, {0, 1, 0}};
-  EXPECT_THAT(make_error(v, Eigen::Vector3d(0, 0, 1)), HasSubstr("not strictly convex at vertex 2"));
+  EXPECT_THAT(make_error(v, Eigen::Vector3d(0, 0, 1)),
+              HasSubstr("not strictly convex at vertex 2"));
 }
 
 TEST(Surface, SelfIntersectingStarIsRejected) {
@@ -87,7 +89,8 @@ class SurfaceFile : public ::testing::Test {
     const auto dir = test::temp_dir("surfaces");
     std::filesystem::create_directories(dir);
     path_ = (dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                    ".yaml")).string();
+                    ".yaml"))
+                .string();
   }
   std::string write(const std::string& text) {
     std::ofstream(path_) << text;
@@ -117,7 +120,8 @@ surfaces:
     link: base
     box_face: -z
     inset: 0.01
-)"), model_);
+)"),
+                                          model_);
   ASSERT_EQ(surfaces.size(), 2u);
   EXPECT_EQ(surfaces[0].link, model_.find_link("a4"));
   EXPECT_NEAR(surfaces[0].area(), 0.0016, 1e-12);
@@ -144,7 +148,8 @@ surfaces:
     normal: [0, 0, 1]
     vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
 )";
-  EXPECT_EQ(error_of(text), path_ + ":4: surface \"palm\": link \"hand\" is not in model \"branching\"");
+  EXPECT_EQ(error_of(text),
+            path_ + ":4: surface \"palm\": link \"hand\" is not in model \"branching\"");
 }
 
 TEST_F(SurfaceFile, NonConvexPolygonIsNamed) {
@@ -155,8 +160,9 @@ surfaces:
     normal: [0, 0, 1]
     vertices: [[0, 0, 0], [1, 0, 0], [0.3, 0.3, 0], [1, 1, 0], [0, 1, 0]]
 )";
-  EXPECT_EQ(error_of(text), path_ + ":6: surface \"dart\": the polygon is not strictly convex at "
-                                    "vertex 2 (a right turn)");
+  EXPECT_EQ(error_of(text), path_ +
+                                ":6: surface \"dart\": the polygon is not strictly convex at "
+                                "vertex 2 (a right turn)");
 }
 
 TEST_F(SurfaceFile, WrongFormatMissingFieldsAndBadNumbers) {
@@ -167,9 +173,10 @@ TEST_F(SurfaceFile, WrongFormatMissingFieldsAndBadNumbers) {
   EXPECT_THAT(error_of("format: stanceplan/surfaces@1\nsurfaces:\n  - name: a\n    link: base\n"
                        "    normal: [0, 0, one]\n    vertices: [[0,0,0],[1,0,0],[0,1,0]]\n"),
               HasSubstr(":5: surface \"a\": normal: expected a number, found \"one\""));
-  EXPECT_THAT(error_of("format: stanceplan/surfaces@1\nsurfaces:\n  - name: a\n    link: base\n"
-                       "    box_face: +w\n"),
-              HasSubstr(":5: surface \"a\": box_face: expected one of +x -x +y -y +z -z, found \"+w\""));
+  EXPECT_THAT(
+      error_of("format: stanceplan/surfaces@1\nsurfaces:\n  - name: a\n    link: base\n"
+               "    box_face: +w\n"),
+      HasSubstr(":5: surface \"a\": box_face: expected one of +x -x +y -y +z -z, found \"+w\""));
   EXPECT_THAT(error_of("format: stanceplan/surfaces@1\nsurfaces:\n  - name: a\n    link: a1\n"
                        "    box_face: +z\n"),
               HasSubstr("link \"a1\" has 0 collision box(es), box_index 0 does not exist"));

@@ -2,8 +2,8 @@
 // mass; fixed and floating base; quaternion root) against central finite differences.
 #include <gtest/gtest.h>
 
-#include <memory>
 #include <cstring>
+#include <memory>
 #include <random>
 
 #include "planner/model/kinematics.h"
@@ -92,7 +92,8 @@ class JacobianTest : public ::testing::TestWithParam<EntityKind> {
   void SetUp() override {
     entity_ = make_entity(test::kBranchingUrdf, GetParam());
     if (GetParam() == EntityKind::FixedRobot) {
-      entity_.T_WB.linear() = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+      entity_.T_WB.linear() =
+          Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
       entity_.T_WB.translation() = Eigen::Vector3d(0.3, -0.2, 0.9);
     }
   }
@@ -130,7 +131,8 @@ class JacobianTest : public ::testing::TestWithParam<EntityKind> {
                            const std::string& what) {
     const double scale = std::max(1.0, numeric.norm());
     EXPECT_LE((analytic - numeric).norm() / scale, 1e-6) << what << "\nanalytic\n"
-                                                         << analytic << "\nnumeric\n" << numeric;
+                                                         << analytic << "\nnumeric\n"
+                                                         << numeric;
   }
 
   Entity entity_;
@@ -162,7 +164,9 @@ TEST_P(JacobianTest, VectorJacobianMatchesFiniteDifferences) {
     for (int link = 0; link < entity_.model->num_links(); ++link) {
       forward_kinematics(entity_, q, data);
       vector_jacobian(entity_, data, link, v_L, J);
-      const auto f = [&](const ModelData& d) -> Eigen::Vector3d { return d.T_WL[link].linear() * v_L; };
+      const auto f = [&](const ModelData& d) -> Eigen::Vector3d {
+        return d.T_WL[link].linear() * v_L;
+      };
       expect_close(J, numeric(q, f), "link " + entity_.model->links[link].name);
     }
   }
@@ -176,7 +180,9 @@ TEST_P(JacobianTest, CenterOfMassJacobianMatchesFiniteDifferences) {
     const Eigen::VectorXd q = random_configuration(rng);
     forward_kinematics(entity_, q, data);
     center_of_mass_jacobian(entity_, data, J);
-    const auto f = [&](const ModelData& d) -> Eigen::Vector3d { return center_of_mass(entity_, d); };
+    const auto f = [&](const ModelData& d) -> Eigen::Vector3d {
+      return center_of_mass(entity_, d);
+    };
     expect_close(J, numeric(q, f), "centre of mass");
   }
 }

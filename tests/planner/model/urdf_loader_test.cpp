@@ -109,8 +109,8 @@ TEST_F(BadUrdf, MalformedXmlIsReported) {
 }
 
 TEST_F(BadUrdf, TwoRootsAreNamed) {
-  const std::string path = write("two_roots.urdf",
-                                 "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/></robot>");
+  const std::string path =
+      write("two_roots.urdf", "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/></robot>");
   const std::string message = error_of([&] { load_urdf(path); });
   EXPECT_THAT(message, HasSubstr(path + ": not a valid URDF"));
   EXPECT_THAT(message, HasSubstr("root"));
@@ -155,7 +155,8 @@ TEST_F(BadUrdf, UnknownMimicSourceIsNamed) {
 }
 
 TEST_F(BadUrdf, FloatingJointInsideTheTreeIsRejected) {
-  const std::string path = write("floating.urdf", R"(<robot name="r"><link name="a"/><link name="b"/>
+  const std::string path =
+      write("floating.urdf", R"(<robot name="r"><link name="a"/><link name="b"/>
     <joint name="free" type="floating"><parent link="a"/><child link="b"/></joint></robot>)");
   EXPECT_THAT(error_of([&] { load_urdf(path); }),
               HasSubstr(path + ": joint \"free\": type floating is not supported"));

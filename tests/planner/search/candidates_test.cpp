@@ -10,7 +10,8 @@ namespace {
 
 // True when the list adds (add) or removes (!add) the contact of surface s1 on the floor (soles)
 // or on the wall (palms).
-bool offers(const std::vector<Candidate>& list, const Scene& scene, const std::string& s1, bool add) {
+bool offers(const std::vector<Candidate>& list, const Scene& scene, const std::string& s1,
+            bool add) {
   const std::string s2 = s1.find("palm") != std::string::npos ? "env/wall" : "env/floor";
   for (const Candidate& c : list)
     if (c.add == add && scene.surfaces.id(scene.system, c.contact.s1) == s1 &&
@@ -37,7 +38,8 @@ TEST(Candidates, PruningRulesAndOptions) {
   options.last_contacts = {{"robot/*_palm", "env/wall"}};
   on_left = enumerate_candidates(scene, data, Stance({left}), goal, options);
   EXPECT_FALSE(offers(on_left, scene, "robot/r_palm", true));
-  EXPECT_TRUE(offers(enumerate_candidates(scene, data, Stance({left, right}), goal, options), scene, "robot/r_palm", true));
+  EXPECT_TRUE(offers(enumerate_candidates(scene, data, Stance({left, right}), goal, options), scene,
+                     "robot/r_palm", true));
   // contact_pairs: only the listed pairs.
   options = SearchOptions{};
   options.contact_reach = 2.0;
@@ -48,7 +50,8 @@ TEST(Candidates, PruningRulesAndOptions) {
   // contact_reach: the hanging palms are farther than 0.3 m from the wall (x = 0.6 m).
   options = SearchOptions{};
   options.contact_reach = 0.3;
-  EXPECT_FALSE(offers(enumerate_candidates(scene, data, Stance({left}), goal, options), scene, "robot/r_palm", true));
+  EXPECT_FALSE(offers(enumerate_candidates(scene, data, Stance({left}), goal, options), scene,
+                      "robot/r_palm", true));
 }
 
 TEST(Candidates, MinContactsKeepsThatManyContactsOnAFloatingBody) {
@@ -61,8 +64,10 @@ TEST(Candidates, MinContactsKeepsThatManyContactsOnAFloatingBody) {
   SearchOptions options;
   options.contact_reach = 2.0;
   // Default (1): any of two or three contacts may go.
-  EXPECT_TRUE(offers(enumerate_candidates(scene, data, two, three, options), scene, "robot/l_sole", false));
-  EXPECT_TRUE(offers(enumerate_candidates(scene, data, three, three, options), scene, "robot/r_palm", false));
+  EXPECT_TRUE(
+      offers(enumerate_candidates(scene, data, two, three, options), scene, "robot/l_sole", false));
+  EXPECT_TRUE(offers(enumerate_candidates(scene, data, three, three, options), scene,
+                     "robot/r_palm", false));
   // 2: from two contacts none is removed, from three any one may be; adding is unaffected.
   options.min_contacts = 2;
   const auto from_two = enumerate_candidates(scene, data, two, three, options);
@@ -70,7 +75,8 @@ TEST(Candidates, MinContactsKeepsThatManyContactsOnAFloatingBody) {
   EXPECT_FALSE(offers(from_two, scene, "robot/r_sole", false));
   EXPECT_TRUE(offers(from_two, scene, "robot/r_palm", true));
   const auto from_three = enumerate_candidates(scene, data, three, three, options);
-  for (const char* s1 : {"robot/l_sole", "robot/r_sole", "robot/r_palm"}) EXPECT_TRUE(offers(from_three, scene, s1, false)) << s1;
+  for (const char* s1 : {"robot/l_sole", "robot/r_sole", "robot/r_palm"})
+    EXPECT_TRUE(offers(from_three, scene, s1, false)) << s1;
 }
 
 }  // namespace

@@ -49,7 +49,9 @@ TEST_F(Walk, PlansAndTheCheckerCertifiesThePlan) {
   const std::string path = (test::temp_dir("search") / "walk_plan.json").string();
   write_plan(result_->plan, *scenario_, path);
   const CertifyReport report = certify(read_plan(path));
-  for (const CheckResult& c : report.checks) EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": " << c.detail;
+  for (const CheckResult& c : report.checks)
+    EXPECT_TRUE(c.passed()) << c.name << " " << c.worst << " at step " << c.step << ": "
+                            << c.detail;
   EXPECT_TRUE(report.passed());
   EXPECT_GE(report.checks.size(), 12u);
 }
@@ -90,7 +92,8 @@ TEST(Search, NoCandidateUndoesTheStepThatMadeItsNode) {
   StanceSearch search(scenario, options);
   std::vector<SearchEvent> removals;
   search.set_observer([&](const SearchEvent& e) {
-    if (e.kind == SearchEventKind::Candidate && e.candidate_case == CandidateCase::Remove) removals.push_back(e);
+    if (e.kind == SearchEventKind::Candidate && e.candidate_case == CandidateCase::Remove)
+      removals.push_back(e);
   });
   const SearchResult result = search.run();
   ASSERT_EQ(result.status, PlanStatus::Found);
@@ -98,7 +101,8 @@ TEST(Search, NoCandidateUndoesTheStepThatMadeItsNode) {
   for (const SearchEvent& e : removals) {
     const PlanStep& made_by = result.tree.at(size_t(e.parent)).step;
     EXPECT_FALSE(made_by.action == "add" && made_by.changed->same_surfaces(e.changed))
-        << "event " << e.number << " removes the contact that node " << e.parent << " was made by adding";
+        << "event " << e.number << " removes the contact that node " << e.parent
+        << " was made by adding";
   }
 }
 
@@ -115,16 +119,19 @@ TEST_F(Walk, SamePlanBitForBitForOneAndTwoThreadsAndTwoRuns) {
   EXPECT_EQ(timeless(two.plan, *scenario_), reference);
   EXPECT_EQ(timeless(again.plan, *scenario_), reference);
   for (size_t i = 0; i < two.plan.steps.size(); ++i)
-    EXPECT_EQ(0, std::memcmp(two.plan.steps[i].q.data(), result_->plan.steps[i].q.data(), sizeof(double) * two.plan.steps[i].q.size()));
+    EXPECT_EQ(0, std::memcmp(two.plan.steps[i].q.data(), result_->plan.steps[i].q.data(),
+                             sizeof(double) * two.plan.steps[i].q.size()));
 }
 
 TEST(Search, AnUnreachableGoalEndsWithAReasonInsideItsBudget) {
-  const Scenario scenario = load_scenario(test::source_path("tests/data/high_platform/unreachable.yaml"));
+  const Scenario scenario =
+      load_scenario(test::source_path("tests/data/high_platform/unreachable.yaml"));
   SearchOptions options = scenario.search;
   options.max_nodes = 6;
   const auto start = Clock::now();
   const SearchResult result = StanceSearch(scenario, options).run();
-  EXPECT_TRUE(result.status == PlanStatus::NodeBudget || result.status == PlanStatus::Exhausted) << to_string(result.status);
+  EXPECT_TRUE(result.status == PlanStatus::NodeBudget || result.status == PlanStatus::Exhausted)
+      << to_string(result.status);
   EXPECT_LE(result.nodes_expanded, 6);
   EXPECT_FALSE(result.message.empty());
   EXPECT_TRUE(result.plan.steps.empty());
@@ -133,7 +140,8 @@ TEST(Search, AnUnreachableGoalEndsWithAReasonInsideItsBudget) {
 }
 
 TEST(Search, ACancelRequestStopsTheSearchWithin200Milliseconds) {
-  const Scenario scenario = load_scenario(test::source_path("tests/data/high_platform/unreachable.yaml"));
+  const Scenario scenario =
+      load_scenario(test::source_path("tests/data/high_platform/unreachable.yaml"));
   SearchOptions options = scenario.search;
   options.max_nodes = 1000;
   StanceSearch search(scenario, options);
@@ -175,7 +183,8 @@ TEST(Search, TheStepGateHoldsTheSearchBetweenEvents) {
   for (size_t k = 1; k <= 4; ++k) {
     gate.step(1);
     const auto deadline = Clock::now() + std::chrono::seconds(10);
-    while (count() < k && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    while (count() < k && Clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
     std::this_thread::sleep_for(std::chrono::milliseconds(150));
     EXPECT_EQ(count(), k) << "step(1) must release exactly one event";
   }

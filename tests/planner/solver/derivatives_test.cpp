@@ -91,14 +91,15 @@ class Derivatives : public ::testing::Test {
                               << J_fd.row(r);
           for (int c = 0; c < nlp.n(); ++c) {
             if (std::abs(J_fd(r, c)) <= 1e-7 * scale) continue;
-            EXPECT_TRUE(declared.count({r, c})) << program.name << " " << block->family() << " row "
-                                                << r - r0 << " column " << c
-                                                << " is nonzero but not declared";
+            EXPECT_TRUE(declared.count({r, c}))
+                << program.name << " " << block->family() << " row " << r - r0 << " column " << c
+                << " is nonzero but not declared";
           }
         }
       }
       const double gscale = std::max(1.0, grad_fd.norm());
-      EXPECT_LE((grad - grad_fd).norm() / gscale, 1e-6) << program.name << " objective, trial " << trial;
+      EXPECT_LE((grad - grad_fd).norm() / gscale, 1e-6)
+          << program.name << " objective, trial " << trial;
     }
   }
 
@@ -109,7 +110,8 @@ Scene* Derivatives::scene_ = nullptr;
 TEST_F(Derivatives, RealiseStanceWithFreePlacements) {
   const Scene& s = *scene_;
   Program p{"realise", {}, false};
-  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"), test::task(s, "robot/r_sole", "env/floor")};
+  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"),
+                        test::task(s, "robot/r_sole", "env/floor")};
   p.request.q_init = test::standing_configuration(s);
   check(p);
 }

@@ -25,7 +25,8 @@ class Pool : public ::testing::Test {
     std::vector<PostureRequest> out;
     for (int i = 0; i < 6; ++i) {
       PostureRequest r;
-      r.contacts = {test::task(*scene_, "robot/l_sole", "env/floor"), test::task(*scene_, "robot/r_sole", "env/floor")};
+      r.contacts = {test::task(*scene_, "robot/l_sole", "env/floor"),
+                    test::task(*scene_, "robot/r_sole", "env/floor")};
       if (i >= 4) r.contacts[0].placement = Placement{-1.49, 0.085, 0.0};
       if (i == 5) {  // case 2: both soles placed, the right one about to leave
         r.contacts[1].placement = Placement{-1.49, -0.085, 0.0};
