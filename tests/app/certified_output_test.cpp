@@ -14,24 +14,15 @@
 #include "planner/search/stance_search.h"
 #include "tests/support/cli.h"
 #include "tests/support/paths.h"
+#include "tests/support/planned_scenario.h"
 
 namespace stanceplan {
 namespace {
 
 using ::testing::HasSubstr;
 
-class CertifiedOutput : public ::testing::Test {
+class CertifiedOutput : public test::PlannedWalk {
  protected:
-  static void SetUpTestSuite() {
-    scenario_ = new Scenario(load_scenario(test::source_path("scenarios/humanoid_walk.yaml")));
-    SearchOptions options = scenario_->search;
-    options.threads = 1;
-    result_ = new SearchResult(StanceSearch(*scenario_, options).run());
-  }
-  static void TearDownTestSuite() {
-    delete result_;
-    delete scenario_;
-  }
   // The walk's plan with step `step`'s left arm swung into the waist (l_shoulder_r at its lower
   // limit, -0.5 rad: the elbow link 9 cm inside the waist); every other step as planned.
   static Plan corrupted(int step) {
@@ -44,11 +35,7 @@ class CertifiedOutput : public ::testing::Test {
   static std::string path(const std::string& name) {
     return (test::temp_dir("certified_output") / name).string();
   }
-  static Scenario* scenario_;
-  static SearchResult* result_;
 };
-Scenario* CertifiedOutput::scenario_ = nullptr;
-SearchResult* CertifiedOutput::result_ = nullptr;
 
 TEST_F(CertifiedOutput, TheWalkPlanIsCertifiedAndWritten) {
   ASSERT_EQ(result_->status, PlanStatus::Found) << result_->message;

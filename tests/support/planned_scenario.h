@@ -27,6 +27,26 @@ inline void expect_certified(const Scenario& scenario, const SearchResult& resul
   EXPECT_TRUE(report.passed());
 }
 
+// A fixture with the walk (scenarios/humanoid_walk.yaml) planned once per test suite, with one
+// solver process: for tests that need a real plan.
+class PlannedWalk : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scenario_ = new Scenario(load_scenario(source_path("scenarios/humanoid_walk.yaml")));
+    SearchOptions options = scenario_->search;
+    options.threads = 1;
+    result_ = new SearchResult(StanceSearch(*scenario_, options).run());
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete scenario_;
+    result_ = nullptr;
+    scenario_ = nullptr;
+  }
+  static inline Scenario* scenario_ = nullptr;
+  static inline SearchResult* result_ = nullptr;
+};
+
 // The contacts of a stance as "s1 id-s2 id" strings, e.g. "cyl/bottom-env/platform_a".
 inline std::set<std::string> stance_ids(const Scenario& scenario, const Stance& stance) {
   std::set<std::string> ids;

@@ -12,29 +12,14 @@
 #include "planner/io/plan_writer.h"
 #include "planner/search/stance_search.h"
 #include "tests/support/paths.h"
+#include "tests/support/planned_scenario.h"
 
 namespace stanceplan {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-class Walk : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    scenario_ = new Scenario(load_scenario(test::source_path("scenarios/humanoid_walk.yaml")));
-    SearchOptions options = scenario_->search;
-    options.threads = 1;
-    result_ = new SearchResult(StanceSearch(*scenario_, options).run());
-  }
-  static void TearDownTestSuite() {
-    delete result_;
-    delete scenario_;
-  }
-  static Scenario* scenario_;
-  static SearchResult* result_;
-};
-Scenario* Walk::scenario_ = nullptr;
-SearchResult* Walk::result_ = nullptr;
+using Walk = test::PlannedWalk;
 
 // The plan without its timing fields, which are the only thing allowed to differ between runs.
 std::string timeless(const Plan& plan, const Scenario& scenario) {
