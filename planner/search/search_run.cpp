@@ -3,6 +3,8 @@
 #include "planner/search/search_run.h"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 #include "planner/search/plan_path.h"
@@ -10,6 +12,13 @@
 
 namespace stanceplan {
 namespace {
+
+// "120 s", "0.25 s", "42.5 s": seconds for people (3 significant digits below 100 s).
+std::string seconds(double s) {
+  std::ostringstream out;
+  out << std::setprecision(s >= 100 ? 6 : 3) << s << " s";
+  return out.str();
+}
 
 SolverOptions cancellable(SolverOptions options, const std::atomic<bool>* cancel) {
   options.cancel = cancel;
@@ -86,9 +95,9 @@ std::optional<SearchResult> StanceSearch::Run::realise_root() {
 
 std::optional<SearchResult> StanceSearch::Run::over_budget() {
   if (search_.stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
-  if (elapsed() > options_.time_limit_s)
+  if (running_time() > options_.time_limit_s)
     return give_up(PlanStatus::TimeBudget,
-                   "no plan within " + std::to_string(options_.time_limit_s) + " s");
+                   "no plan within " + seconds(options_.time_limit_s) + " of search" + held_note());
   if (result_.nodes_expanded >= options_.max_nodes)
     return give_up(PlanStatus::NodeBudget,
                    "no plan within " + std::to_string(options_.max_nodes) + " expanded nodes");
@@ -159,6 +168,7 @@ SearchResult StanceSearch::Run::finish(PlanStatus status, std::string message) {
   result_.status = status;
   result_.message = std::move(message);
   result_.wall_time_s = elapsed();
+  result_.held_time_s = held_time();
   result_.plan.stats = {result_.nodes_expanded, result_.solver_calls, result_.wall_time_s,
                         threads_};
   if (status != PlanStatus::Found && search_.observer_) {
@@ -189,6 +199,20 @@ SearchResult StanceSearch::Run::found(int goal_node) {
 
 double StanceSearch::Run::elapsed() const {
   return std::chrono::duration<double>(Clock::now() - start_).count();
+}
+
+double StanceSearch::Run::held_time() const {
+  return std::chrono::duration<double>(search_.held_).count();
+}
+
+double StanceSearch::Run::running_time() const {
+  return elapsed() - held_time();
+}
+
+// " (and 42.5 s held by the step gate)", or "" when the gate never held the search.
+std::string StanceSearch::Run::held_note() const {
+  const double held = held_time();
+  return held >= 0.05 ? " (and " + seconds(held) + " held by the step gate)" : "";
 }
 
 }  // namespace stanceplan

@@ -51,7 +51,10 @@ class StanceSearch::Run {
   SearchResult finish(PlanStatus status, std::string message);
   SearchResult give_up(PlanStatus status, std::string message);
   SearchResult found(int goal_node);
-  double elapsed() const;
+  double elapsed() const;       // wall time since the run started
+  double held_time() const;     // of it, held by the step gate
+  double running_time() const;  // the rest: what the time budget counts
+  std::string held_note() const;
 
   // --- the tree and its frontier (search_frontier.cpp)
   SearchNode make_node(int parent, const PostureRequest& request, const PostureResult& solved,

@@ -37,7 +37,11 @@ StanceSearch::StanceSearch(const Problem& problem, SearchOptions options)
 }
 
 bool StanceSearch::publish(SearchEvent event) {
-  if (gate_ && !gate_->pass()) cancelled_ = true;
+  if (gate_) {  // time held here is the observer's, not the search's (time_limit_s)
+    const auto start = std::chrono::steady_clock::now();
+    if (!gate_->pass()) cancelled_ = true;
+    held_ += std::chrono::steady_clock::now() - start;
+  }
   if (stopped()) return false;
   event.number = next_event_++;
   if (observer_) observer_(event);

@@ -6,6 +6,7 @@
 // milestone of the guide path. Adds loop avoidance, backtracking, budgets, cancellation, events and
 // a step gate. Deterministic: the plan does not depend on the thread count.
 #include <atomic>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct SearchResult {
   int nodes_expanded = 0;
   int solver_calls = 0;
   double wall_time_s = 0.0;
+  // Of wall_time_s, the time the step gate held the search (paused, stepped, throttled by an
+  // observer): it does not count against SearchOptions::time_limit_s.
+  double held_time_s = 0.0;
   double solver_time_s = 0.0;  // summed over solves
 };
 
@@ -76,6 +80,7 @@ class StanceSearch {
   SearchObserver observer_;
   StepGate* gate_ = nullptr;
   SolverPool* pool_ = nullptr;
+  std::chrono::steady_clock::duration held_{};  // in the gate; written by the search thread only
   std::atomic<bool> cancelled_{false};
   int next_event_ = 0;
 };

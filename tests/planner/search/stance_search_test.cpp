@@ -184,5 +184,29 @@ TEST(Search, TheStepGateHoldsTheSearchBetweenEvents) {
   EXPECT_EQ(events.back().kind, SearchEventKind::PlanFound);
 }
 
+// Time the step gate holds the search (a paused panel, a speed limit) is the observer's, not the
+// search's: held for 2 s before its first event, a search with a 1.5 s budget and a one-node
+// budget ends on the node budget, not the time budget, and reports the time held.
+TEST(Search, TimeHeldByTheStepGateDoesNotCountAgainstTheTimeBudget) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  SearchOptions options = scenario.search;
+  options.threads = 1;
+  options.time_limit_s = 1.5;
+  options.max_nodes = 1;
+  StanceSearch search(scenario, options);
+  StepGate gate;
+  gate.pause();
+  search.set_gate(&gate);
+  std::thread releaser([&] {
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    gate.resume();
+  });
+  const SearchResult result = search.run();
+  releaser.join();
+  EXPECT_EQ(result.status, PlanStatus::NodeBudget) << result.message;
+  EXPECT_GT(result.held_time_s, options.time_limit_s);
+  EXPECT_GE(result.wall_time_s, result.held_time_s);
+}
+
 }  // namespace
 }  // namespace stanceplan
