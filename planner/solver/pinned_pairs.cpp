@@ -1,5 +1,6 @@
 #include "planner/solver/pinned_pairs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/collision/signed_distance.h"
@@ -59,13 +60,9 @@ std::vector<PairExclusion> pair_exclusions(const Scene& scene, const PostureRequ
   return why;
 }
 
-std::vector<PinnedLink> pinned_links(const Scene& scene, const PostureRequest& request) {
-  std::vector<PinnedLink> out;
-  if (!scene.collision) return out;
-  const std::vector<int> pinned_by = pinning_contact(scene, request);
-  for (size_t i = 0; i < pinned_by.size(); ++i)
-    if (pinned_by[i] >= -1) out.push_back({int(i), pinned_by[i]});
-  return out;
+bool has_pinned_pair(const Scene& scene, const PostureRequest& request) {
+  const std::vector<PairExclusion> why = pair_exclusions(scene, request);
+  return std::find(why.begin(), why.end(), PairExclusion::Pinned) != why.end();
 }
 
 Eigen::Isometry3d pinned_link_pose(const Scene& scene, const ContactTask& task, SurfaceRef moving,
@@ -104,6 +101,7 @@ std::vector<PinnedPairDistance> pinned_pair_distances(const Scene& scene,
   if (!scene.collision) return out;
   const CollisionModel& model = *scene.collision;
   const std::vector<PairExclusion> why = pair_exclusions(scene, request);
+  if (std::find(why.begin(), why.end(), PairExclusion::Pinned) == why.end()) return out;
   const std::vector<int> pinned_by = pinning_contact(scene, request);
   CollisionData work(scene.system, model);
   work.update(model, data);

@@ -28,13 +28,6 @@ enum class PairExclusion : unsigned char { None, Touching, Pinned };
 // Per candidate pair of scene.collision (empty without one): why the request leaves it out.
 std::vector<PairExclusion> pair_exclusions(const Scene& scene, const PostureRequest& request);
 
-// A link pinned by a request, and the contact that pins it (-1: it never moves).
-struct PinnedLink {
-  int collision_link = -1;  // index into CollisionModel::links()
-  int contact = -1;         // index into PostureRequest::contacts
-};
-std::vector<PinnedLink> pinned_links(const Scene& scene, const PostureRequest& request);
-
 // The world pose that contact `task`'s fixed placement gives the link of `moving` (s1 or s2 of the
 // contact), the other surface's link being at T_WL_other: E10-E13 read as a rigid transform
 // (s1's origin at (x, y) in s2's plane, z1 = -z2, x1 at angle theta from x2).
@@ -45,6 +38,9 @@ Eigen::Isometry3d pinned_link_pose(const Scene& scene, const ContactTask& task, 
 // pose of every link the request pins with the pose its fixed placement gives it.
 void place_pinned_links(const Scene& scene, const PostureRequest& request,
                         std::vector<ModelData>& data);
+
+// Whether the request pins both links of some candidate pair (cheap: no kinematics, no distance).
+bool has_pinned_pair(const Scene& scene, const PostureRequest& request);
 
 // One pinned pair's signed distance at some poses.
 struct PinnedPairDistance {

@@ -86,13 +86,13 @@ double collision_bound(double distance_at_guess, double margin) {
 
 // The pinned pairs (pinned_pairs.h) at the link poses of `data` against their E20 bounds: an
 // Infeasible result naming the pair furthest below its bound, or nullopt when every one keeps it.
+// `guess`: the same pairs at the initial guess (their E20 bounds).
 std::optional<PostureResult> pinned_pair_collision(const Scene& scene,
                                                    const PostureRequest& request,
-                                                   std::span<const ModelData> data, double margin) {
+                                                   std::span<const ModelData> data,
+                                                   const std::vector<PinnedPairDistance>& guess,
+                                                   double margin) {
   const std::vector<PinnedPairDistance> now = pinned_pair_distances(scene, request, data);
-  if (now.empty()) return std::nullopt;
-  const std::vector<PinnedPairDistance> guess =
-      pinned_pair_distances(scene, request, system_kinematics(scene.system, request.q_init));
   double worst = 1e-4;  // the tolerance of the collision active set's own check
   int worst_index = -1;
   for (size_t i = 0; i < now.size(); ++i) {
@@ -427,10 +427,13 @@ PostureResult PostureSolver::solve_with(const PostureRequest& request,
   const bool collisions = scene_.collision && options.enforce_collisions;
   // Pinned pairs have no row in the program: their distance follows from the fixed placements
   // alone, so a stance that puts them into each other is infeasible before any solve.
-  if (collisions) {
-    std::vector<ModelData> pinned = system_kinematics(scene_.system, request.q_init);
-    place_pinned_links(scene_, request, pinned);
-    if (auto failed = pinned_pair_collision(scene_, request, pinned, options.collision_margin))
+  std::vector<PinnedPairDistance> pinned_at_guess;
+  if (collisions && has_pinned_pair(scene_, request)) {
+    std::vector<ModelData> data = system_kinematics(scene_.system, request.q_init);
+    pinned_at_guess = pinned_pair_distances(scene_, request, data);
+    place_pinned_links(scene_, request, data);
+    if (auto failed =
+            pinned_pair_collision(scene_, request, data, pinned_at_guess, options.collision_margin))
       return *failed;
   }
   PostureResult result = solve_once(request, options);
@@ -441,10 +444,10 @@ PostureResult PostureSolver::solve_with(const PostureRequest& request,
     result.message = "non-finite " + part + " in the solution (" + result.message + ")";
   }
   // ... and checked again on the solution, where the placements hold to the solver's tolerance.
-  if (result.status == PostureStatus::Solved && collisions)
+  if (result.status == PostureStatus::Solved && !pinned_at_guess.empty())
     if (auto failed =
             pinned_pair_collision(scene_, request, system_kinematics(scene_.system, result.q),
-                                  options.collision_margin)) {
+                                  pinned_at_guess, options.collision_margin)) {
       failed->q = result.q;
       failed->iterations = result.iterations;
       failed->time_ms = result.time_ms;
