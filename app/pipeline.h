@@ -49,6 +49,11 @@ struct Planned {
 };
 // Throws InputError on bad input (the scenario file, a stance placed into itself).
 Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostream& err);
+// A search that ended without a plan: the steps from the root to the node closest to the goal,
+// marked partial and certified like a whole plan (only its certified prefix is written), at
+// `path`. False (said on `err`) when nothing was written.
+bool write_partial_plan(const SearchResult& result, const Scenario& scenario,
+                        const std::string& path, std::ostream& err);
 
 // --- figures (pipeline_figures.cpp)
 // The figures' view of a plan read from its file (named after its scenario file, else itself) or

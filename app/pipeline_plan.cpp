@@ -1,7 +1,6 @@
 // Planning a scenario (app/pipeline.h): the search on its worker thread, the progress line or
 // the event log, live snapshots, the certified plan, and the final sequence from memory.
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -17,6 +16,7 @@
 #include <sstream>
 
 #include "app/exit_codes.h"
+#include "app/interrupt_handler.h"
 #include "app/live/plan_session.h"
 #include "app/live/snapshot_writer.h"
 #include "app/pipeline.h"
@@ -35,26 +35,14 @@ extern "C" void cancel_running_search(int) {
   if (PlanSession* session = g_running.load()) session->cancel_search();
 }
 
-// Installs the handlers for the lifetime of one search, restoring the previous ones after.
+// Cancels `session` on SIGINT / SIGTERM for the lifetime of one search.
 class CancelOnSignal {
  public:
-  explicit CancelOnSignal(PlanSession& session) {
-    g_running = &session;
-    struct sigaction action {};
-    action.sa_handler = cancel_running_search;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &previous_int_);
-    sigaction(SIGTERM, &action, &previous_term_);
-  }
-  ~CancelOnSignal() {
-    sigaction(SIGINT, &previous_int_, nullptr);
-    sigaction(SIGTERM, &previous_term_, nullptr);
-    g_running = nullptr;
-  }
+  explicit CancelOnSignal(PlanSession& session) { g_running = &session; }
+  ~CancelOnSignal() { g_running = nullptr; }
 
  private:
-  struct sigaction previous_int_ {
-  }, previous_term_{};
+  InterruptHandler handler_{cancel_running_search};
 };
 
 std::string describe(const Scene& scene, const Stance& stance) {
@@ -102,24 +90,26 @@ void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::o
       << " s after it\n";
 }
 
+}  // namespace
+
 // --partial: the steps from the root to the node closest to the goal, marked partial in the file
 // (certified like a whole plan: only its certified prefix is written).
-void write_partial_plan(const SearchResult& result, const Scenario& scenario,
+bool write_partial_plan(const SearchResult& result, const Scenario& scenario,
                         const std::string& path, std::ostream& err) {
   if (result.closest_node < 0) {
     err << "  no partial plan: the search has no node (the initial stance was not realised)\n";
-    return;
+    return false;
   }
   Plan plan = plan_to_node(result.tree, result.closest_node);
   plan.stats = result.plan.stats;
   plan.partial = std::string(to_string(result.status)) + ": " + result.message;
   const size_t steps = plan.steps.size();
-  if (write_certified_plan(std::move(plan), scenario, path, true, err) != kExitSuccess) return;
+  if (write_certified_plan(std::move(plan), scenario, path, true, err) != kExitSuccess)
+    return false;
   err << "stanceplan: wrote a PARTIAL plan to " << path << ": " << steps
       << " steps from the initial stance to the closest stance; it does not reach the goal\n";
+  return true;
 }
-
-}  // namespace
 
 Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostream& err) {
   const auto started = std::chrono::steady_clock::now();

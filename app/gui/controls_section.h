@@ -9,8 +9,9 @@
 namespace stanceplan::gui {
 
 struct SearchFigures {
-  int milestones = 0;      // in the scenario
-  double elapsed_s = 0.0;  // since the search started (frozen when it finished)
+  int milestones = 0;            // in the scenario
+  double elapsed_s = 0.0;        // since the search started (frozen when it finished)
+  const Stance* goal = nullptr;  // the goal stance: the status names the node closest to it
 };
 
 void draw_controls_section(SearchDriver& driver, const SessionMirror& mirror,

@@ -110,9 +110,16 @@ void GuiWindow::wait_events(double timeout_s) {
     glfwPollEvents();
 }
 
-void GuiWindow::begin_frame() {
+void GuiWindow::begin_frame(const std::optional<ScriptedPointer>& pointer) {
   ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
+  ImGui_ImplGlfw_NewFrame();  // reads the real mouse into ImGui's IO (ImGui 1.86)
+  if (pointer) {              // ... which the scripted pointer then overrides, before NewFrame
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(pointer->x, pointer->y);
+    io.MouseDown[ImGuiMouseButton_Left] = pointer->left;
+    io.MouseDown[ImGuiMouseButton_Right] = pointer->right;
+    io.MouseWheel = pointer->wheel;
+  }
   ImGui::NewFrame();
 }
 

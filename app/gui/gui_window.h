@@ -3,6 +3,7 @@
 // through the GLFW and OpenGL3 backends compiled into Debian's libimgui.a (docs/DEPENDENCIES.md
 // section 6). Thin: frames begin and end here, everything shown is drawn by the panel sections.
 // Use from one thread (the one that made it): the window's context stays current on it.
+#include <optional>
 #include <string>
 
 #include "app/gui/window_gl.h"
@@ -11,6 +12,14 @@
 struct GLFWwindow;
 
 namespace stanceplan::gui {
+
+// A pointer state that replaces the real mouse's for the frames it is set (scripted panels):
+// ImGui then sees it exactly as it would see a user's (hover, clicks, drags, the wheel).
+struct ScriptedPointer {
+  float x = 0.0f, y = 0.0f;  // window coordinates (ImGui's units)
+  bool left = false, right = false;
+  float wheel = 0.0f;  // clicks this frame (positive: away from the user)
+};
 
 class GuiWindow {
  public:
@@ -24,8 +33,8 @@ class GuiWindow {
   void request_close();
   // Waits for input at most `timeout_s` (0: only polls).
   void wait_events(double timeout_s);
-  // Starts an ImGui frame.
-  void begin_frame();
+  // Starts an ImGui frame; with a scripted pointer, ImGui sees it instead of the mouse.
+  void begin_frame(const std::optional<ScriptedPointer>& pointer = std::nullopt);
   // Clears the back buffer to `clear` and draws the ImGui frame into it.
   void end_frame(render::Color clear);
   // The back buffer as drawn by end_frame (read before present()), rows top-down, opaque.

@@ -12,6 +12,16 @@
 namespace stanceplan::gui {
 namespace {
 
+// "8.4 ms", "1.32 s": solver times for people.
+std::string people_ms(double ms) {
+  char text[32];
+  if (ms < 1000.0)
+    std::snprintf(text, sizeof(text), "%.1f ms", ms);
+  else
+    std::snprintf(text, sizeof(text), "%.2f s", ms / 1000.0);
+  return text;
+}
+
 constexpr ImGuiTableFlags kTable =
     ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingStretchProp;
 
@@ -19,8 +29,11 @@ void draw_solver(const SearchEvent& e) {
   const bool solved = e.status == PostureStatus::Solved;
   ImGui::TextColored(solved ? loaded_color() : rejected_color(), "%s", to_string(e.status));
   ImGui::SameLine();
-  ImGui::TextColored(muted_text_color(), "\u00b7 %d iterations \u00b7 %.1f ms", e.iterations,
-                     e.time_ms);
+  // A failed solve is shown at the solver's final iterate: the configuration, forces and
+  // residuals below are that iterate's, not a solution's.
+  ImGui::TextColored(muted_text_color(), "\u00b7 %d iterations \u00b7 %s \u00b7 %s", e.iterations,
+                     people_ms(e.time_ms).c_str(),
+                     solved ? "solution" : "shown: the final iterate");
   if (!e.message.empty() && !(solved && e.accepted)) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(muted_text_color(), "%s", e.message.c_str());
@@ -28,17 +41,27 @@ void draw_solver(const SearchEvent& e) {
   }
 }
 
-void draw_residuals(const NodeDetails& d) {
+// Every family's worst residual against the solver's constraint tolerance (Ipopt's
+// constr_viol_tol, SolverOptions::tolerance): over it in red with the factor.
+void draw_residuals(const NodeDetails& d, double tolerance) {
   if (d.residuals.empty()) return;
-  section_title("Worst residuals");
-  if (!ImGui::BeginTable("residuals", 4, kTable)) return;
-  const size_t shown = std::min<size_t>(d.residuals.size(), 6);
+  char heading[96];
+  std::snprintf(heading, sizeof(heading), "Residuals (constraint tolerance %.0e)", tolerance);
+  section_title(heading);
+  if (!ImGui::BeginTable("residuals", 3, kTable)) return;
+  const size_t shown = std::min<size_t>(d.residuals.size(), 8);
   for (size_t i = 0; i < shown; ++i) {
-    if (i % 2 == 0) ImGui::TableNextRow();
+    const ResidualRow& r = d.residuals[i];
+    ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(d.residuals[i].family.c_str());
+    ImGui::TextUnformatted(r.family.c_str());
     ImGui::TableNextColumn();
-    ImGui::Text("%.1e", d.residuals[i].value);
+    ImGui::Text("%.1e", r.value);
+    ImGui::TableNextColumn();
+    if (r.value <= tolerance)
+      ImGui::TextColored(loaded_color(), "within");
+    else
+      ImGui::TextColored(rejected_color(), "%.0f\u00d7 over", r.value / tolerance);
   }
   ImGui::EndTable();
 }
@@ -155,18 +178,26 @@ void draw_header(const Scene& scene, const SessionMirror& mirror, const SearchEv
                        node->id, node->depth, e.number);
   }
   if (e.parent >= 0) {
+    const std::string label = "parent #" + std::to_string(e.parent);
     ImGui::SameLine();
-    if (ImGui::SmallButton(("parent #" + std::to_string(e.parent)).c_str()))
-      select_node(state, e.parent);
+    // On the same line when it fits there (narrow windows), else on the next.
+    const float width =
+        ImGui::CalcTextSize(label.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+    if (ImGui::SmallButton(label.c_str())) select_node(state, e.parent);
   }
 }
 
 }  // namespace
 
 void draw_node_section(const Scene& scene, const SessionMirror& mirror, long shown,
-                       const std::string& title, PanelState& state) {
+                       const std::string& title, double tolerance, PanelState& state) {
   if (shown < 0 || shown >= static_cast<long>(mirror.events().size())) {
-    ImGui::TextColored(muted_text_color(), "Waiting for the first event\u2026");
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(muted_text_color(),
+                       "No event yet: the view shows the initial configuration as the scenario "
+                       "states it, before any solve. Run (Space) or Step event (Right arrow).");
+    ImGui::PopTextWrapPos();
     return;
   }
   const SearchEvent& e = mirror.events()[shown];
@@ -174,7 +205,7 @@ void draw_node_section(const Scene& scene, const SessionMirror& mirror, long sho
   if (e.kind == SearchEventKind::Candidate) draw_solver(e);
   const NodeDetails details = node_details(scene, e);
   draw_contacts(details);
-  draw_residuals(details);
+  draw_residuals(details, tolerance);
   draw_torques(details);
   draw_configuration(details);
 }

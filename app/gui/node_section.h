@@ -11,8 +11,9 @@
 
 namespace stanceplan::gui {
 
-// `shown` indexes mirror.events() (-1: nothing to show yet); `title` names it ("Node 12").
+// `shown` indexes mirror.events() (-1: nothing to show yet); `title` names it ("Node 12");
+// `tolerance`: the solver's constraint tolerance, which the residuals are shown against.
 void draw_node_section(const Scene& scene, const SessionMirror& mirror, long shown,
-                       const std::string& title, PanelState& state);
+                       const std::string& title, double tolerance, PanelState& state);
 
 }  // namespace stanceplan::gui

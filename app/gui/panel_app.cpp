@@ -1,10 +1,10 @@
 #include "app/gui/panel_app.h"
 
 #include <imgui.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iomanip>
 #include <memory>
 #include <ostream>
@@ -12,35 +12,33 @@
 
 #include "app/exit_codes.h"
 #include "app/gui/controls_section.h"
-#include "app/gui/gui_window.h"
 #include "app/gui/node_section.h"
-#include "app/gui/orbit_camera.h"
-#include "app/gui/panel_exports.h"
-#include "app/gui/panel_layout.h"
+#include "app/gui/panel_app_impl.h"
+#include "app/gui/panel_script.h"
 #include "app/gui/plan_bar_section.h"
-#include "app/gui/search_driver.h"
-#include "app/gui/session_mirror.h"
+#include "app/gui/plots_section.h"
 #include "app/gui/tree_section.h"
 #include "app/gui/ui_style.h"
-#include "app/gui/view_renderer.h"
 #include "app/gui/view_section.h"
-#include "app/gui/view_texture.h"
+#include "app/interrupt_handler.h"
 #include "app/live/event_record.h"
-#include "app/live/plan_session.h"
 #include "app/pipeline.h"
-#include "app/plan_output.h"
 #include "planner/util/fork_gate.h"
 #include "render/figures/step_caption.h"
 #include "render/image/png_io.h"
 #include "render/scene/scene_assembly.h"
 
 namespace stanceplan::app {
-namespace {
+namespace panel_detail {
 
-using Clock = std::chrono::steady_clock;
+std::atomic<int> g_close_signal{0};
+
 using namespace gui;
 
-constexpr double kFramePeriod = 1.0 / 30.0;  // the panel redraws at most 30 times a second
+namespace {
+
+constexpr double kFramePeriod =
+    1.0 / 30.0;  // the loop turns (and redraws) at most 30 times a second
 constexpr ImGuiWindowFlags kSideWindow = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                          ImGuiWindowFlags_NoCollapse |
                                          ImGuiWindowFlags_NoSavedSettings;
@@ -85,70 +83,45 @@ render::Camera initial_camera(const Scenario& scenario, const render::RenderStyl
   return render::frame_box(box, render::View::ThreeQuarter, aspect, render::frame_margins(style));
 }
 
-// The panel: owns the window, the session, the render thread and the panel state; one frame()
-// per loop turn.
-class PanelApp {
- public:
-  PanelApp(const Scenario& scenario, const PanelOptions& options)
-      : scenario_(scenario),
-        options_(options),
-        session_(std::make_unique<PlanSession>(scenario, search_options(scenario, options))),
-        window_(options.width, options.height, "stanceplan \u2014 " + scenario.name),
-        meshes_(std::make_shared<render::MeshLibrary>()),
-        style_(live_style(scenario)),
-        view_(scenario.scene, style_, meshes_),
-        texture_(window_.gl()),
-        driver_(session_->gate(), options.start_paused) {
-    driver_.set_speed_limit(options.speed_limit);
-    state_.speed_limit = static_cast<float>(options.speed_limit);
-    state_.export_folder = options.out_dir;
-    const PanelLayout layout =
-        panel_layout(float(window_.framebuffer_width()), float(window_.framebuffer_height()));
-    camera_ = OrbitCamera(
-        initial_camera(scenario, style_, *meshes_, layout.view.w / std::max(layout.view.h, 1.0f)));
-    framed_ = camera_;
-    session_->start();
-    search_start_ = Clock::now();
-  }
+}  // namespace
+extern "C" void note_close_signal(int signal_number) {
+  g_close_signal.store(signal_number);
+}
 
-  int run(std::ostream& out, std::ostream& err);
+// SIGINT / SIGTERM end the panel as closing its window does (the loop sees the flag within a
+// frame period); the previous handlers come back when the panel ends.
+class CloseOnSignal {
+ public:
+  CloseOnSignal() { g_close_signal = 0; }
 
  private:
-  void frame(bool last, std::ostream& out, std::ostream& err);
-  void sync(double dt_s);
-  void on_search_finished(std::ostream& out, std::ostream& err);
-  long shown_event() const;
-  std::string shown_title(long shown) const;
-  ViewRequest view_request(long shown, const Rect& area) const;
-  void update_view(long shown, const Rect& area, bool wait);
-  void carry_out_requests(long shown, const Rect& area);
-  double stop_search();
-  bool needs_frame();
-
-  const Scenario& scenario_;
-  PanelOptions options_;
-  // Made first: its solver worker processes fork before the window, GL and the render thread
-  // start any thread (solver_pool.h).
-  std::unique_ptr<PlanSession> session_;
-  GuiWindow window_;
-  std::shared_ptr<render::MeshLibrary> meshes_;
-  render::RenderStyle style_;
-  ViewRenderer view_;
-  ViewTexture texture_;
-  SearchDriver driver_;
-  SessionMirror mirror_;
-  PanelState state_;
-  OrbitCamera camera_, framed_;
-  std::shared_ptr<const Plan> plan_;  // the plan found, once the search has found it
-  Clock::time_point search_start_;
-  double search_elapsed_s_ = 0.0;
-  bool finish_handled_ = false;
-  long seen_input_ = -1;
-  int settle_frames_ = 0;
-  std::string last_view_key_;
-  std::uint64_t last_view_id_ = 0;
-  std::vector<double> frame_ms_;
+  InterruptHandler handler_{note_close_signal};
 };
+
+PanelApp::PanelApp(const Scenario& scenario, const PanelOptions& options,
+                   std::vector<ScriptAction> script)
+    : scenario_(scenario),
+      options_(options),
+      session_(std::make_unique<PlanSession>(scenario, search_options(scenario, options))),
+      window_(options.width, options.height, "stanceplan \u2014 " + scenario.name),
+      meshes_(std::make_shared<render::MeshLibrary>()),
+      style_(live_style(scenario)),
+      view_(scenario.scene, style_, meshes_),
+      texture_(window_.gl()),
+      driver_(session_->gate(), options.start_paused),
+      goal_stance_(scenario.stance(scenario.goal_stance)) {
+  driver_.set_speed_limit(options.speed_limit);
+  state_.speed_limit = static_cast<float>(options.speed_limit);
+  state_.export_folder = options.out_dir;
+  if (!script.empty()) script_.emplace(std::move(script));
+  const PanelLayout layout =
+      panel_layout(float(window_.framebuffer_width()), float(window_.framebuffer_height()));
+  camera_ = OrbitCamera(
+      initial_camera(scenario, style_, *meshes_, layout.view.w / std::max(layout.view.h, 1.0f)));
+  framed_ = camera_;
+  session_->start();
+  search_start_ = Clock::now();
+}
 
 int PanelApp::run(std::ostream& out, std::ostream& err) {
   int frames = 0;                         // counted (see frames_after_search)
@@ -157,7 +130,19 @@ int PanelApp::run(std::ostream& out, std::ostream& err) {
   while (!window_.should_close()) {
     // At most kFramePeriod between loop turns; input wakes the loop at once.
     window_.wait_events(std::max(kFramePeriod - ms_since(turn) / 1000.0, 0.0));
+    const double turn_dt = ms_since(turn) / 1000.0;
     turn = Clock::now();
+    if (const int signal_number = g_close_signal.exchange(0)) {
+      out << "panel: " << (signal_number == SIGINT ? "SIGINT" : "SIGTERM")
+          << " received: closing the window\n";
+      window_.request_close();
+      continue;
+    }
+    {
+      const ForkGate::Pass pass;  // the search forks between turns (planner/util/fork_gate.h)
+      pace(turn_dt, out, err);    // every turn, drawn or not: the speed limit needs no input
+      advance_script(out, err);
+    }
     if (!needs_frame()) continue;  // idle: nothing to redraw, no CPU taken from the search
     const Clock::time_point start = Clock::now();
     const double dt = std::chrono::duration<double>(start - last).count();
@@ -165,12 +150,7 @@ int PanelApp::run(std::ostream& out, std::ostream& err) {
     // Scripted runs count their frames from the start, or from the end of the search.
     if (!options_.frames_after_search || mirror_.finished()) ++frames;
     const bool final_frame = options_.exit_after_frames > 0 && frames >= options_.exit_after_frames;
-    {
-      const ForkGate::Pass pass;  // the search forks between frames (planner/util/fork_gate.h)
-      window_.begin_frame();
-      sync(dt);
-      frame(final_frame, out, err);
-    }
+    draw_frame(dt, final_frame, out, err);
     frame_ms_.push_back(ms_since(start));  // the panel's own work: events, drawing, upload
     if (final_frame) window_.request_close();
   }
@@ -179,32 +159,12 @@ int PanelApp::run(std::ostream& out, std::ostream& err) {
       << std::setprecision(1) << median(frame_ms_) << " ms; 3-D view: " << view_.frames_rendered()
       << " images, median render " << view_.median_render_ms() << " ms; search stopped " << stop_ms
       << " ms after the window closed\n";
-  return kExitSuccess;
+  return script_failed_ ? kExitFailed : kExitSuccess;
 }
 
-// A frame is drawn when something changed: input, a search event, the end of the search, a new
-// picture or message from the render thread, playback; and a few more after that, for ImGui's
-// hover and active states to settle. Scripted runs draw every frame (they count them).
-bool PanelApp::needs_frame() {
-  bool changed = options_.exit_after_frames > 0 || state_.playing ||
-                 window_.input_events() != seen_input_ || view_.has_news() ||
-                 session_->event_count() != mirror_.events().size() ||
-                 session_->finished() != mirror_.finished();
-  seen_input_ = window_.input_events();
-  if (changed) settle_frames_ = 3;
-  if (settle_frames_ == 0) return false;
-  --settle_frames_;
-  return true;
-}
-
-// The window closed: cancel the search (it stops between solver iterations) and join its thread.
-double PanelApp::stop_search() {
-  const Clock::time_point start = Clock::now();
-  session_.reset();
-  return ms_since(start);
-}
-
-void PanelApp::sync(double dt_s) {
+// Takes the search's new events and applies the run mode and speed limit to the step gate; at
+// the end of the search, saves the plan (before a script's next action: it may move the timeline).
+void PanelApp::pace(double dt_s, std::ostream& out, std::ostream& err) {
   const size_t before = mirror_.events().size();
   mirror_.sync(*session_);
   std::vector<SearchEventKind> arrived;
@@ -217,39 +177,56 @@ void PanelApp::sync(double dt_s) {
     select_node(state_, *options_.select_node);
     options_.select_node.reset();
   }
-  if (!plan_) return;
-  advance_timeline(state_, static_cast<int>(plan_->steps.size()), dt_s);
-  // A node selected on the plan moves the timeline to its step.
-  if (state_.source == ViewSource::Node) {
-    const std::vector<int> path = mirror_.tree().plan_path();
-    const auto on_plan = std::find(path.begin(), path.end(), state_.selected_node);
-    if (on_plan != path.end()) state_.plan_step = static_cast<int>(on_plan - path.begin());
+  if (mirror_.finished() && !finish_handled_) {
+    on_search_finished(out, err);
+    finish_handled_ = true;
   }
 }
 
-void PanelApp::on_search_finished(std::ostream& out, std::ostream& err) {
-  const SearchResult& result = *mirror_.result();
-  search_elapsed_s_ = result.wall_time_s;
-  if (result.status != PlanStatus::Found || result.plan.steps.empty()) return;
-  plan_ = std::make_shared<const Plan>(result.plan);
-  state_.plan_step = static_cast<int>(result.plan.steps.size()) - 1;
-  if (state_.source == ViewSource::Latest) state_.source = ViewSource::PlanStep;
-  try {
-    std::filesystem::create_directories(options_.out_dir);
-    const std::string path = (std::filesystem::path(options_.out_dir) / "plan.json").string();
-    std::ostringstream why;
-    if (write_certified_plan(result.plan, scenario_, path, false, why) != kExitSuccess) {
-      state_.messages.push_back("error: plan found but not saved: " + why.str());
-      err << why.str();
-      return;
-    }
-    state_.messages.push_back("plan found: " + std::to_string(result.plan.steps.size()) +
-                              " steps, certified, saved " + path);
-    out << "panel: " << state_.messages.back() << "\n";
-  } catch (const std::exception& e) {
-    state_.messages.push_back(std::string("error: ") + e.what());
-    err << "stanceplan: error: " << e.what() << "\n";
+// A frame is drawn when something changed: input, a search event, the end of the search, a new
+// picture or message from the render thread, playback, scripted mouse moves or a screenshot; and
+// a few more after that, for ImGui's hover and active states to settle. Runs with
+// --exit-after-frames draw every turn (they count frames).
+bool PanelApp::needs_frame() {
+  const bool changed = options_.exit_after_frames > 0 || state_.playing ||
+                       window_.input_events() != seen_input_ || view_.has_news() ||
+                       mirror_.events().size() != drawn_events_ ||
+                       mirror_.finished() != drawn_finished_ || !pointer_moves_.empty() ||
+                       !pending_screenshot_.empty() || state_.open_tab >= 0;
+  seen_input_ = window_.input_events();
+  drawn_events_ = mirror_.events().size();
+  drawn_finished_ = mirror_.finished();
+  if (changed) settle_frames_ = 3;
+  if (settle_frames_ == 0) return false;
+  --settle_frames_;
+  return true;
+}
+
+void PanelApp::draw_frame(double dt_s, bool last, std::ostream& out, std::ostream& err) {
+  const ForkGate::Pass pass;  // the search forks between frames (planner/util/fork_gate.h)
+  std::optional<ScriptedPointer> pointer;
+  if (!pointer_moves_.empty()) {
+    pointer = pointer_moves_.front();
+    pointer_moves_.pop_front();
   }
+  window_.begin_frame(pointer);
+  if (plan_) {
+    advance_timeline(state_, static_cast<int>(plan_->steps.size()), dt_s);
+    // A node selected on the plan moves the timeline to its step.
+    if (state_.source == ViewSource::Node) {
+      const std::vector<int> path = mirror_.tree().plan_path();
+      const auto on_plan = std::find(path.begin(), path.end(), state_.selected_node);
+      if (on_plan != path.end()) state_.plan_step = static_cast<int>(on_plan - path.begin());
+    }
+  }
+  frame(last, out, err);
+}
+
+// The window closed: cancel the search (it stops between solver iterations) and join its thread.
+double PanelApp::stop_search() {
+  const Clock::time_point start = Clock::now();
+  session_.reset();
+  return ms_since(start);
 }
 
 long PanelApp::shown_event() const {
@@ -291,75 +268,53 @@ std::string PanelApp::shown_title(long shown) const {
   return "";
 }
 
+// What the view shows: the event `shown`, or before the first event (a paused start) the
+// scenario's initial configuration, which the search has not solved yet.
 ViewRequest PanelApp::view_request(long shown, const Rect& area) const {
   ViewRequest r;
-  const SearchEvent& e = mirror_.events()[shown];
-  r.q = e.q;
-  r.contacts = e.contacts;
-  r.forces = e.forces;
+  if (shown >= 0) {
+    const SearchEvent& e = mirror_.events()[shown];
+    r.q = e.q;
+    r.contacts = e.contacts;
+    r.forces = e.forces;
+    const int milestones = static_cast<int>(scenario_.milestones.size());
+    r.caption = state_.source == ViewSource::PlanStep && plan_
+                    ? render::step_caption(app::plan_view(scenario_, *plan_), state_.plan_step)
+                    : event_caption(scenario_.scene, e, milestones);
+  } else {
+    r.q = scenario_.initial_configuration;
+    r.caption =
+        "Initial configuration, as the scenario states it\nnot solved yet: the search has "
+        "published no event";
+  }
   r.camera = camera_.camera();
   // The picture has the view's size in framebuffer pixels (larger than window units on HiDPI).
   const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
   r.width = std::max(16, static_cast<int>(area.w * scale.x));
   r.height = std::max(16, static_cast<int>(area.h * scale.y));
-  const int milestones = static_cast<int>(scenario_.milestones.size());
-  r.caption = state_.source == ViewSource::PlanStep && plan_
-                  ? render::step_caption(app::plan_view(scenario_, *plan_), state_.plan_step)
-                  : event_caption(scenario_.scene, e, milestones);
   return r;
 }
 
 // Asks the render thread for a new picture when what is shown, the camera or the size changed;
 // uploads the newest finished one. `wait`: block until the picture asked for is there.
 void PanelApp::update_view(long shown, const Rect& area, bool wait) {
-  if (shown >= 0) {
-    ViewRequest request = view_request(shown, area);
-    const render::Camera& c = request.camera;
-    std::ostringstream key;
-    key << shown << ' ' << int(state_.source) << ' ' << state_.plan_step << ' ' << request.width
-        << 'x' << request.height << ' ' << c.eye.transpose() << ' ' << c.target.transpose();
-    if (key.str() != last_view_key_) {
-      last_view_key_ = key.str();
-      last_view_id_ = view_.request(std::move(request));
-    }
+  ViewRequest request = view_request(shown, area);
+  const render::Camera& c = request.camera;
+  std::ostringstream key;
+  key << shown << ' ' << int(state_.source) << ' ' << state_.plan_step << ' ' << request.width
+      << 'x' << request.height << ' ' << c.eye.transpose() << ' ' << c.target.transpose();
+  if (key.str() != last_view_key_) {
+    last_view_key_ = key.str();
+    last_view_id_ = view_.request(std::move(request));
   }
   if (wait && last_view_id_ > 0) view_.wait_for(last_view_id_, std::chrono::seconds(30));
   if (std::optional<ViewFrame> frame = view_.take()) texture_.upload(frame->image);
 }
 
-void PanelApp::carry_out_requests(long shown, const Rect& area) {
-  if (state_.reset_camera) camera_ = framed_;
-  state_.reset_camera = false;
-  if (state_.cancel_search) session_->cancel();
-  state_.cancel_search = false;
-  const std::filesystem::path dir(options_.out_dir);
-  if (state_.export_view && shown >= 0) {
-    std::filesystem::create_directories(dir);
-    const std::string name =
-        state_.source == ViewSource::PlanStep
-            ? "view_step_" + std::to_string(state_.plan_step) + ".png"
-            : "view_event_" + std::to_string(mirror_.events()[shown].number) + ".png";
-    view_.post(export_view_job(scenario_.scene, view_request(shown, area), meshes_,
-                               (dir / name).string()));
-    state_.messages.push_back("exporting " + (dir / name).string() + "\u2026");
-  }
-  state_.export_view = false;
-  if (state_.export_strip && plan_) {
-    std::filesystem::create_directories(dir);
-    view_.post(export_strip_job(scenario_, plan_, meshes_, (dir / "strip.png").string()));
-    state_.messages.push_back("exporting " + (dir / "strip.png").string() + "\u2026");
-  }
-  state_.export_strip = false;
-}
-
 void PanelApp::frame(bool last, std::ostream& out, std::ostream& err) {
-  if (mirror_.finished() && !finish_handled_) {
-    on_search_finished(out, err);
-    finish_handled_ = true;
-  }
   const ImVec2 window = ImGui::GetIO().DisplaySize;  // ImGui's units: window coordinates
   const PanelLayout layout = panel_layout(window.x, window.y);
-  long shown = shown_event();
+  const long shown = shown_event();
   // The tree keeps the newest node in sight while following, else the selection.
   const int focus = state_.source == ViewSource::Latest
                         ? static_cast<int>(mirror_.tree().nodes().size()) - 1
@@ -370,45 +325,96 @@ void PanelApp::frame(bool last, std::ostream& out, std::ostream& err) {
     state_.tree_focus = focus;
     state_.reveal_focus = true;
   }
-  update_view(shown, layout.view, last && !options_.screenshot.empty());
-  draw_view_section(layout.view, texture_, camera_, state_);
-  const int milestones = static_cast<int>(scenario_.milestones.size());
-  draw_plan_bar_section(layout.bar, scenario_.scene, mirror_, milestones, state_);
-  ImGui::SetNextWindowPos(ImVec2(layout.search.x, layout.search.y));
-  ImGui::SetNextWindowSize(ImVec2(layout.search.w, layout.search.h));
-  ImGui::Begin("Search", nullptr, kSideWindow);
-  draw_controls_section(driver_, mirror_, {milestones, search_elapsed_s_}, state_);
-  draw_tree_section(scenario_.scene, mirror_, state_);
-  ImGui::End();
-  ImGui::SetNextWindowPos(ImVec2(layout.inspector.x, layout.inspector.y));
-  ImGui::SetNextWindowSize(ImVec2(layout.inspector.w, layout.inspector.h));
-  ImGui::Begin("Inspector", nullptr, kSideWindow);
-  draw_node_section(scenario_.scene, mirror_, shown, shown_title(shown), state_);
-  ImGui::End();
+  const std::string screenshot = last ? options_.screenshot : pending_screenshot_;
+  update_view(shown, layout.view, !screenshot.empty());
+  draw_windows(shown, layout);
+  handle_shortcuts();
   carry_out_requests(shown, layout.view);
   for (std::string& m : view_.take_messages()) {
     if (m.rfind("error", 0) == 0) err << "stanceplan: " << m << "\n";
     state_.messages.push_back(std::move(m));
   }
   window_.end_frame(kWindowClear);
-  if (last && !options_.screenshot.empty()) {
-    render::write_png(options_.screenshot, window_.read_back_buffer());
-    out << "panel: window saved to " << options_.screenshot << "\n";
+  if (!screenshot.empty()) {
+    render::write_png(screenshot, window_.read_back_buffer());
+    out << "panel: window saved to " << screenshot << "\n";
+    pending_screenshot_.clear();
   }
   window_.present();
 }
 
-}  // namespace
+void PanelApp::draw_windows(long shown, const PanelLayout& layout) {
+  draw_view_section(layout.view, texture_, camera_, state_);
+  const int milestones = static_cast<int>(scenario_.milestones.size());
+  draw_plan_bar_section(layout.bar, scenario_.scene, mirror_, milestones, state_);
+  ImGui::SetNextWindowPos(ImVec2(layout.search.x, layout.search.y));
+  ImGui::SetNextWindowSize(ImVec2(layout.search.w, layout.search.h));
+  ImGui::Begin("Search", nullptr, kSideWindow);
+  draw_controls_section(driver_, mirror_, {milestones, search_elapsed_s_, &goal_stance_}, state_);
+  draw_tree_section(scenario_.scene, mirror_, state_);
+  ImGui::End();
+  ImGui::SetNextWindowPos(ImVec2(layout.inspector.x, layout.inspector.y));
+  ImGui::SetNextWindowSize(ImVec2(layout.inspector.w, layout.inspector.h));
+  ImGui::Begin("Inspector", nullptr, kSideWindow);
+  if (ImGui::BeginTabBar("inspector tabs")) {
+    const auto tab_flags = [&](int tab) {
+      return state_.open_tab == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+    };
+    if (ImGui::BeginTabItem("Inspector", nullptr, tab_flags(0))) {
+      draw_node_section(scenario_.scene, mirror_, shown, shown_title(shown),
+                        scenario_.solver.tolerance, state_);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Plots", nullptr, tab_flags(1))) {
+      draw_plots_section(scenario_.scene, mirror_, plan_.get(), state_);
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  state_.open_tab = -1;
+  ImGui::End();
+}
+
+// Space run / pause; Right step event (while searching) or next plan step; Left previous plan
+// step; E step expansion; M next milestone; Home reset view; R run again once the search ended.
+// Not while a text field has the keyboard. GLFW's key codes of letters are their ASCII capitals,
+// and ImGui 1.86's GLFW backend indexes KeysDown by them.
+void PanelApp::handle_shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  const auto named = [&](ImGuiKey key) { return pressed(ImGui::GetKeyIndex(key)); };
+  const bool live = !mirror_.finished();
+  if (live && named(ImGuiKey_Space))
+    driver_.mode() == RunMode::Running ? driver_.pause() : driver_.run();
+  if (live && named(ImGuiKey_RightArrow)) driver_.step_event();
+  if (live && pressed('E')) driver_.step_expansion();
+  if (live && pressed('M')) driver_.next_milestone();
+  if (named(ImGuiKey_Home)) state_.reset_camera = true;
+  if (!live && pressed('R')) state_.rerun = true;
+  if (plan_ && (named(ImGuiKey_RightArrow) || named(ImGuiKey_LeftArrow))) {
+    const int last = static_cast<int>(plan_->steps.size()) - 1;
+    const int delta = named(ImGuiKey_RightArrow) ? 1 : -1;
+    state_.plan_step = std::clamp(state_.plan_step + delta, 0, last);
+    state_.source = ViewSource::PlanStep;
+    state_.playing = false;
+  }
+}
+
+}  // namespace panel_detail
 
 int run_panel(const PanelOptions& options, std::ostream& out, std::ostream& err) {
   const Scenario scenario = load_scenario(options.scenario);
-  std::unique_ptr<PanelApp> app;
+  std::vector<gui::ScriptAction> script;
+  if (!options.script.empty()) script = gui::read_panel_script(options.script);
+  std::unique_ptr<panel_detail::PanelApp> app;
   try {
-    app = std::make_unique<PanelApp>(scenario, options);
+    app = std::make_unique<panel_detail::PanelApp>(scenario, options, std::move(script));
   } catch (const std::runtime_error& e) {  // no display, no GL context
     err << "stanceplan: error: " << e.what() << "\n";
     return kExitBadInput;
   }
+  const panel_detail::CloseOnSignal close_on_signal;
   return app->run(out, err);
 }
 

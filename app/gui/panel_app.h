@@ -28,10 +28,15 @@ struct PanelOptions {
   bool frames_after_search = false;  // count exit_after_frames from the end of the search
   std::string screenshot;
   std::optional<int> select_node;
+  // A panel script (panel_script.h): actions run in order against the live window, one line
+  // printed per action; read and checked before the window opens.
+  std::string script;
 };
 
-// Runs the panel until the window is closed (or exit_after_frames): 0 when closed normally, 1 when
-// no window can be opened (said on `err`). Bad input throws InputError (file, field, expected,
+// Runs the panel until the window is closed (or exit_after_frames, or a script's `quit`): 0 when
+// closed normally, also by SIGINT or SIGTERM (which close it as the user would), 1 when no window
+// can be opened (said on `err`), 2 when a script action failed (a `wait-for plan` on a search that
+// ended without one). Bad input throws InputError (file, field, expected,
 // found) like every command. Closing the window cancels the search (between solver iterations)
 // and joins its thread; the figures of the session (frame and render times, how long the search
 // took to stop) are printed on `out`.

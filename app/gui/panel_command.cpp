@@ -61,6 +61,10 @@ void add_panel_subcommand(CLI::App& cli, PanelOptions& options) {
                 "count --exit-after-frames from the end of the search (scripted runs)");
   cmd->add_option("--screenshot", options.screenshot,
                   "save the window as PNG after its last frame (waits for the 3-D view)");
+  cmd->add_option(
+      "--script", options.script,
+      "run the actions of FILE against the live window, one per line (run, pause, "
+      "step event, wait 2, wait-for plan, screenshot F.png, quit, ...: docs/README.md)");
   cmd->add_option("--select-node", options.select_node,
                   "select this node as soon as the search makes it")
       ->check(CLI::NonNegativeNumber);

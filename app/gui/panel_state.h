@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "app/gui/panel_layout.h"
+
 namespace stanceplan::gui {
 
 // What the 3-D view and the inspector show.
@@ -30,12 +32,23 @@ struct PanelState {
 
   float speed_limit = 0.0f;  // events per second while running; 0: none
 
+  // The search tree's view.
+  int tree_filter = 0;                   // a TreeFilter (tree_rows.h): what the list shows
+  std::vector<bool> tree_collapsed;      // by node id: the node's subtree is hidden
+  std::vector<bool> tree_rejected_open;  // by node id: its rejected candidates are listed
+  int tree_focus_row = -1;  // the focused node's row last frame: the list scrolls as it moves
+
   // Raised by buttons, carried out (and cleared) by the frame loop.
   bool export_view = false;
   bool export_strip = false;
   bool cancel_search = false;
   bool reset_camera = false;
+  bool rerun = false;           // a new search from the start (after a failure or a cancel)
+  bool show_closest = false;    // view the node closest to the goal (after a failure)
+  bool export_partial = false;  // write the plan to the closest node (after a failure)
+  int open_tab = -1;            // the inspector's tab to bring forward (0 inspector, 1 plots)
   std::string export_folder = ".";
+  Rect reset_button;  // where the view's Reset view button was drawn (scripted clicks)
 
   std::vector<std::string> messages;  // export results and warnings, newest last
 };

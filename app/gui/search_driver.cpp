@@ -37,6 +37,13 @@ void SearchDriver::next_milestone() {
   mode_ = RunMode::UntilMilestone;
 }
 
+void SearchDriver::restarted() {
+  if (mode_ != RunMode::Running) mode_ = RunMode::Paused;
+  outstanding_ = 0;
+  pending_steps_ = 0;
+  credit_ = 0.0;
+}
+
 void SearchDriver::apply_pause() {
   gate_.pause();  // also drops any budget not yet used
   gate_paused_ = true;

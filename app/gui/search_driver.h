@@ -28,6 +28,9 @@ class SearchDriver {
   void set_speed_limit(double events_per_s) { limit_ = events_per_s > 0.0 ? events_per_s : 0.0; }
   double speed_limit() const { return limit_; }
   RunMode mode() const { return mode_; }
+  // The session restarted its search on the same gate: grants and credit of the old search are
+  // void; a step in progress ends paused.
+  void restarted();
 
   // Once per frame: the kinds of the events published since the previous call, in order, and the
   // seconds elapsed. Applies the mode to the gate.

@@ -1,6 +1,7 @@
 #include "app/gui/view_section.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGuiButtonFlags_AllowItemOverlap
 
 #include "app/gui/ui_style.h"
 
@@ -42,9 +43,14 @@ bool draw_view_section(const Rect& area, const ViewTexture& texture, OrbitCamera
   ImGui::PopStyleVar();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size(area.w, area.h);
+  // The view catches the mouse over its whole area, but lets the buttons drawn over it (Reset
+  // view) take the hover and the clicks first: with AllowItemOverlap it is hovered only when it
+  // was the hovered item the frame before, and SetItemAllowOverlap lets later items take over.
   ImGui::InvisibleButton("view", size,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                             ImGuiButtonFlags_MouseButtonMiddle);
+                             ImGuiButtonFlags_MouseButtonMiddle |
+                             ImGuiButtonFlags_AllowItemOverlap);
+  ImGui::SetItemAllowOverlap();
   const bool moved = handle_mouse(area, camera);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 corner(origin.x + size.x, origin.y + size.y);
@@ -65,6 +71,10 @@ bool draw_view_section(const Rect& area, const ViewTexture& texture, OrbitCamera
   ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.16f, 0.18f, 0.21f, 0.85f));
   ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImVec4(0.24f, 0.27f, 0.31f, 0.95f));
   if (ImGui::Button(reset)) state.reset_camera = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the framing of the whole task (Home)");
+  const ImVec2 reset_min = ImGui::GetItemRectMin(), reset_max = ImGui::GetItemRectMax();
+  state.reset_button = {reset_min.x, reset_min.y, reset_max.x - reset_min.x,
+                        reset_max.y - reset_min.y};
   ImGui::PopStyleColor(2);
   const char* hint = "drag: orbit \u00b7 right-drag: pan \u00b7 wheel: zoom";
   const ImVec2 hint_size = ImGui::CalcTextSize(hint);

@@ -7,12 +7,17 @@ namespace stanceplan::app {
 
 PlanSession::PlanSession(const Scenario& scenario, SearchOptions options)
     : scenario_(scenario),
+      options_(std::move(options)),
       pool_solver_(scenario.scene, scenario.solver),
-      pool_(pool_solver_, solver_processes(options)),
-      search_(scenario, std::move(options)) {
-  search_.set_solver_pool(&pool_);
-  search_.set_gate(&gate_);
-  search_.set_observer([this](const SearchEvent& e) { record(e); });
+      pool_(pool_solver_, solver_processes(options_)),
+      search_(make_search()) {}
+
+std::unique_ptr<StanceSearch> PlanSession::make_search() {
+  auto search = std::make_unique<StanceSearch>(scenario_, options_);
+  search->set_solver_pool(&pool_);
+  search->set_gate(&gate_);
+  search->set_observer([this](const SearchEvent& e) { record(e); });
+  return search;
 }
 
 PlanSession::~PlanSession() {
@@ -30,8 +35,24 @@ StepGate& PlanSession::gate() {
   return gate_;
 }
 
+void PlanSession::restart() {
+  cancel();
+  if (worker_.joinable()) worker_.join();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    events_.clear();
+    times_s_.clear();
+    result_.reset();
+    error_ = nullptr;
+    finished_ = false;
+  }
+  search_ = make_search();
+  gate_.reopen();
+  start();
+}
+
 void PlanSession::cancel() {
-  search_.cancel();
+  search_->cancel();
   gate_.cancel();
 }
 
@@ -92,7 +113,7 @@ void PlanSession::run() {
   std::optional<SearchResult> result;
   std::exception_ptr error;
   try {
-    result = search_.run();
+    result = search_->run();
   } catch (...) {  // rethrown by the consumer on its own thread (error())
     error = std::current_exception();
   }

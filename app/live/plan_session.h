@@ -6,6 +6,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -28,12 +29,16 @@ class PlanSession {
   PlanSession(const PlanSession&) = delete;
   PlanSession& operator=(const PlanSession&) = delete;
 
-  void start();      // launches the worker thread (once)
+  void start();  // launches the worker thread (once per run)
+  // A new search from the start with the same options, solver processes and gate (the panel's
+  // Run again after a failure or a cancel): cancels and joins the current one, forgets its events
+  // and result, and starts. The gate keeps its pause state; its cancellation is lifted.
+  void restart();
   StepGate& gate();  // pause / step / resume, used by the panel
   void cancel();     // cancels search and gate; returns at once
   // Async-signal-safe part of cancel(), for SIGINT handlers: one atomic store. A search held by a
   // paused gate stays held; the command line never pauses it.
-  void cancel_search() { search_.cancel(); }
+  void cancel_search() { search_->cancel(); }
   bool finished() const;
   size_t event_count() const;
   SearchEvent event(size_t index) const;  // copy, thread-safe
@@ -52,11 +57,13 @@ class PlanSession {
  private:
   void record(const SearchEvent& event);
   void run();
+  std::unique_ptr<StanceSearch> make_search();
 
   const Scenario& scenario_;
+  const SearchOptions options_;
   PostureSolver pool_solver_;  // the solver the worker processes copy
   SolverPool pool_;
-  StanceSearch search_;
+  std::unique_ptr<StanceSearch> search_;
   StepGate gate_;
   std::thread worker_;
   std::chrono::steady_clock::time_point start_time_;

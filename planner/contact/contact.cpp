@@ -19,6 +19,13 @@ int Stance::find(const Contact& c) const {
   return -1;
 }
 
+int stance_difference(const Stance& a, const Stance& b) {
+  int d = 0;
+  for (const Contact& c : a.contacts()) d += b.find(c) < 0;
+  for (const Contact& c : b.contacts()) d += a.find(c) < 0;
+  return d;
+}
+
 Stance Stance::with(const Contact& c) const {
   std::vector<Contact> next = contacts_;
   next.push_back(c);

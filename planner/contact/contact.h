@@ -57,6 +57,10 @@ class Stance {
   std::vector<Contact> contacts_;
 };
 
+// How many contacts one stance has that the other has not (same surface pairs), both ways: 0 for
+// the same stance, 1 between a stance and one with a contact more.
+int stance_difference(const Stance& a, const Stance& b);
+
 struct StanceHash {
   size_t operator()(const Stance& s) const { return s.hash(); }
 };

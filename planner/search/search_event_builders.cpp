@@ -2,24 +2,26 @@
 
 namespace stanceplan {
 
+// A node's event carries the stance as the node realised it: the contacts with the ones that
+// carry force, the forces, torques and the solve's iterations (milestone, goal and expansion
+// events show the node's loaded contacts, as the candidate that made it did).
 SearchEvent node_event(SearchEventKind kind, const SearchNode& node, int milestone, int nodes) {
   SearchEvent e;
   e.kind = kind;
   e.node = node.id;
   e.stance = node.stance();
   e.q = node.q();
+  e.contacts = node.step.contacts;
+  e.forces = node.step.forces;
+  e.iterations = node.step.iterations;
+  e.torques = node.step.torques;
   e.milestone = milestone;
   e.nodes = nodes;
   return e;
 }
 
 SearchEvent expansion_event(const SearchNode& node, int milestone, int nodes) {
-  SearchEvent e = node_event(SearchEventKind::Expansion, node, milestone, nodes);
-  e.contacts = node.step.contacts;
-  e.forces = node.step.forces;
-  e.iterations = node.step.iterations;
-  e.torques = node.step.torques;
-  return e;
+  return node_event(SearchEventKind::Expansion, node, milestone, nodes);
 }
 
 SearchEvent root_event(const SearchNode& root, const PostureResult& solved) {

@@ -54,6 +54,7 @@ class StepGate {
   void resume();
   void step(int events = 1);  // let `events` more events through, then pause again
   void cancel();
+  void reopen();  // lifts a cancel() for a new search; the pause state stays
   bool paused() const;
   // Blocks while paused (unless cancelled); returns false once cancelled.
   bool pass();

@@ -11,13 +11,6 @@
 namespace stanceplan {
 namespace {
 
-int stance_difference(const Stance& a, const Stance& b) {
-  int d = 0;
-  for (const Contact& c : a.contacts()) d += b.find(c) < 0;
-  for (const Contact& c : b.contacts()) d += a.find(c) < 0;
-  return d;
-}
-
 // Two placements of one contact within the search's tolerances.
 bool same_placement(const Placement& a, const Placement& b, const SearchOptions& options) {
   return std::abs(a.x - b.x) <= options.placement_tolerance &&
@@ -85,6 +78,7 @@ bool StanceSearch::Run::already_in_tree(const Stance& stance,
 
 // Fewest contacts from the goal's stance, then the lowest cost.
 int StanceSearch::Run::closest() const {
+  if (tree_.empty()) return -1;  // cancelled before the root was realised
   int best = 0;
   const auto key = [&](const SearchNode& x) {
     return std::make_pair(stance_difference(x.stance(), goal_), cost(x));

@@ -80,6 +80,8 @@ std::optional<SearchResult> StanceSearch::Run::realise_root() {
   const PostureResult solved = solver_.solve(request);
   ++result_.solver_calls;
   result_.solver_time_s += solved.time_ms / 1000.0;
+  // A cancel during the root's solve stops it: that says nothing of the initial stance.
+  if (search_.stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
   if (solved.status != PostureStatus::Solved)
     return finish(PlanStatus::InitialInfeasible,
                   "the initial stance has no posture: " + solved.message);

@@ -49,6 +49,12 @@ void StepGate::cancel() {
   changed_.notify_all();
 }
 
+void StepGate::reopen() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  cancelled_ = false;
+  budget_ = 0;
+}
+
 bool StepGate::paused() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return paused_ && budget_ == 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <optional>
 #include <span>
@@ -311,14 +312,26 @@ std::string rounds_exhausted(bool collisions_grew, bool torques_grew, int rounds
          " after " + std::to_string(rounds) + " active-set rounds";
 }
 
-// Appends the worst violated family to a failed result's message and, when it is collision (and
-// `excluded` is given: collisions enforced), the pair nearest to violating the margin.
-void name_worst_family(const Scene& scene, const std::vector<bool>* excluded, double margin,
-                       PostureResult& result) {
+// Appends the worst family at the final iterate to a failed result's message, with its residual
+// against the constraint tolerance (a stop on the iteration limit may leave every constraint
+// within it: then the dual or complementarity test is what failed, and the message says so) and,
+// when it is collision (and `excluded` is given: collisions enforced), the pair nearest to
+// violating the margin.
+void name_worst_family(const Scene& scene, const std::vector<bool>* excluded,
+                       const SolverOptions& options, PostureResult& result) {
   if (result.residuals.empty()) return;
-  result.message += "; worst violated family: " + result.worst_family();
-  if (excluded && result.worst_family() == "collision" && result.q.size() == scene.system.nq())
-    result.message += closest_pair(scene, result.q, *excluded, margin);
+  const std::string family = result.worst_family();
+  const double worst = result.residuals.at(family);
+  char figures[96];
+  std::snprintf(figures, sizeof(figures), " (%.1e, tolerance %.0e)", worst, options.tolerance);
+  if (worst <= options.tolerance) {
+    result.message += "; every constraint family within tolerance at the final iterate, largest " +
+                      family + figures + ": the optimality or complementarity test failed";
+    return;
+  }
+  result.message += "; worst violated family: " + family + figures;
+  if (excluded && family == "collision" && result.q.size() == scene.system.nq())
+    result.message += closest_pair(scene, result.q, *excluded, options.collision_margin);
 }
 
 // The round's solution into `result`: configuration, forces, placements, torques and the residual
@@ -554,7 +567,7 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
   }
   if (result.q.size() == scene_.system.nq()) normalise_quaternions(scene_.system, result.q);
   if (result.status != PostureStatus::Solved)
-    name_worst_family(scene_, collisions ? &excluded : nullptr, options.collision_margin, result);
+    name_worst_family(scene_, collisions ? &excluded : nullptr, options, result);
   result.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <optional>
 
 #include "app/live/plan_session.h"
 #include "tests/support/paths.h"
@@ -63,6 +64,36 @@ TEST(NodeDetails, TheRootPostureCarriesTheRobotsWeightWithinItsTorqueLimits) {
   EXPECT_EQ(d.configuration[7].name, d.torques[0].joint);
   for (size_t i = 0; i < d.configuration.size(); ++i)
     EXPECT_EQ(d.configuration[i].value, root.q[i]);
+}
+
+// A milestone event shows the stance its node realised: the loaded contacts with their forces
+// (they once showed "Contacts: none").
+TEST(NodeDetails, AMilestoneEventListsItsNodesLoadedContacts) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  SearchOptions options = scenario.search;
+  options.threads = 1;
+  app::PlanSession session(scenario, options);
+  session.start();
+  std::optional<SearchEvent> milestone;
+  for (size_t i = 0; !milestone && session.wait_for_event(i, 60s); ++i)
+    if (session.event(i).kind == SearchEventKind::Milestone) milestone = session.event(i);
+  ASSERT_TRUE(milestone.has_value()) << "the walk reaches milestones";
+  const NodeDetails d = node_details(scenario.scene, *milestone);
+  ASSERT_FALSE(d.contacts.empty());
+  int loaded = 0;
+  for (const ContactRow& c : d.contacts) loaded += c.loaded ? 1 : 0;
+  EXPECT_GE(loaded, 1);
+  // Every contact of the node's stance is listed (with the contact its transition broke or made,
+  // touching without force, when there is one).
+  EXPECT_GE(d.contacts.size(), milestone->stance.contacts().size());
+  for (const Contact& c : milestone->stance.contacts()) {
+    bool listed = false;
+    for (const PlanContact& shown : milestone->contacts) listed |= shown.contact.same_surfaces(c);
+    EXPECT_TRUE(listed);
+  }
+  const double weight = robot_mass(scenario.scene) * scenario.scene.gravity.norm();
+  EXPECT_NEAR(d.total_force_z, weight, 2e-3 * weight);
+  EXPECT_FALSE(d.torques.empty());
 }
 
 }  // namespace

@@ -17,52 +17,15 @@
 #include "render/image/png_io.h"
 #include "render/render_style.h"
 #include "tests/support/paths.h"
+#include "tests/support/xvfb_run.h"
 
 namespace stanceplan {
 namespace {
 
 namespace fs = std::filesystem;
-
-// xvfb-run from PATH, or "" when it is not installed.
-std::string find_xvfb_run() {
-  const char* path = std::getenv("PATH");
-  std::stringstream dirs(path != nullptr ? path : "/usr/bin:/bin");
-  for (std::string dir; std::getline(dirs, dir, ':');) {
-    const fs::path candidate = fs::path(dir) / "xvfb-run";
-    std::error_code ec;
-    if (fs::is_regular_file(candidate, ec)) return candidate.string();
-  }
-  return "";
-}
-
-struct XvfbRun {
-  int code = -1;
-  std::string log;
-};
-
-// Runs `stanceplan ARGS` in a 1280x720 virtual screen; stdout and stderr go to the log.
-XvfbRun run_in_xvfb(const std::string& args, const fs::path& dir) {
-  const std::string xvfb = find_xvfb_run();
-  const fs::path log = dir / "log.txt";
-  // -a finds a free display from -n on: starting each test process at its own number keeps
-  // parallel test cases from racing for the same one.
-  const std::string first_display = std::to_string(100 + getpid() % 5000);
-  // Under AddressSanitizer (the CI's ASan pass) leak checking is off for the window process only:
-  // Mesa's GLX/DRI side keeps a few hundred bytes per process that it never frees, allocated in
-  // libraries GLFW has unloaded by exit, so no suppression can name them (measured: 592 bytes in 7
-  // objects, libOSMesa and unknown modules). Every other ASan check stays on, and the panel's
-  // classes are leak-checked in-process by the other tests of this folder.
-  const std::string asan = "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" ";
-  const std::string command = asan + xvfb + " -a -n " + first_display +
-                              " -s \"-screen 0 1280x720x24\" " + STANCEPLAN_BINARY + " " + args +
-                              " > " + log.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  XvfbRun run;
-  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  run.log.assign(std::istreambuf_iterator<char>(in), {});
-  return run;
-}
+using test::find_xvfb_run;
+using test::run_in_xvfb;
+using test::XvfbRun;
 
 bool near(const std::uint8_t* p, int r, int g, int b, int tolerance) {
   return std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&

@@ -3,26 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/search_event_fakes.h"
+
 namespace stanceplan::gui {
 namespace {
 
-SearchEvent candidate(int parent, int node, bool accepted) {
-  SearchEvent e;
-  e.kind = SearchEventKind::Candidate;
-  e.parent = parent;
-  e.node = accepted ? node : -1;
-  e.accepted = accepted;
-  e.status = accepted ? PostureStatus::Solved : PostureStatus::Infeasible;
-  return e;
-}
-
-SearchEvent of_kind(SearchEventKind kind, int node, int milestone = 0) {
-  SearchEvent e;
-  e.kind = kind;
-  e.node = node;
-  e.milestone = milestone;
-  return e;
-}
+using test::candidate;
+using test::of_kind;
 
 // root 0 -> expanded: 1 accepted, one rejected, 2 accepted; 1 expanded -> 3 accepted, reaches
 // milestone 1; plan found at 3.

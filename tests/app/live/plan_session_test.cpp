@@ -100,5 +100,47 @@ TEST(PlanSession, DestroyingARunningSessionCancelsAndJoins) {
   SUCCEED();
 }
 
+// The panel's Run again: after a cancel, restart() runs a new search from the start on the same
+// solver processes and gate, whose events are numbered from 0 again, to the plan.
+TEST(PlanSession, RestartAfterACancelRunsANewSearchToThePlan) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  PlanSession session(scenario, single_process(scenario));
+  session.start();
+  ASSERT_TRUE(session.wait_for_event(3, kPatience));
+  session.cancel();
+  ASSERT_TRUE(session.wait_until_finished(kPatience));
+  ASSERT_TRUE(session.result().has_value());
+  EXPECT_EQ(session.result()->status, PlanStatus::Cancelled);
+  session.restart();
+  EXPECT_FALSE(session.finished());
+  ASSERT_TRUE(session.wait_until_finished(kPatience));
+  ASSERT_TRUE(session.result().has_value());
+  EXPECT_EQ(session.result()->status, PlanStatus::Found) << session.result()->message;
+  ASSERT_GT(session.event_count(), 4u);
+  EXPECT_EQ(session.event(0).number, 0);
+  EXPECT_TRUE(session.event(0).accepted);
+  EXPECT_EQ(session.event(session.event_count() - 1).kind, SearchEventKind::PlanFound);
+}
+
+// A paused gate stays paused across a restart: the new search waits for the panel.
+TEST(PlanSession, RestartKeepsAPausedGatePaused) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  PlanSession session(scenario, single_process(scenario));
+  session.gate().pause();
+  session.gate().step(2);
+  session.start();
+  ASSERT_TRUE(session.wait_for_event(1, kPatience));
+  session.cancel();
+  ASSERT_TRUE(session.wait_until_finished(kPatience));
+  session.gate().pause();
+  session.restart();
+  std::this_thread::sleep_for(kQuiet);
+  EXPECT_EQ(session.event_count(), 0u) << "the restarted search ran past a paused gate";
+  session.gate().step(1);
+  ASSERT_TRUE(session.wait_for_event(0, kPatience));
+  std::this_thread::sleep_for(kQuiet);
+  EXPECT_EQ(session.event_count(), 1u);
+}
+
 }  // namespace
 }  // namespace stanceplan
