@@ -15,6 +15,12 @@ bool button(const char* label, bool enabled, float width) {
   return pressed && enabled;
 }
 
+// The long label when it fits the button's width, else the short one (960 x 600 windows).
+const char* fitting(const char* long_label, const char* short_label, float width) {
+  const float padding = 2.0f * ImGui::GetStyle().FramePadding.x;
+  return ImGui::CalcTextSize(long_label).x + padding <= width ? long_label : short_label;
+}
+
 // A hover tooltip for the last item (its shortcut, what it does).
 void tip(const char* text) {
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
@@ -28,15 +34,15 @@ void draw_search_buttons(SearchDriver& driver, PanelState& state, float third) {
   if (button("Pause", mode != RunMode::Paused, third)) driver.pause();
   tip("Hold the search before its next event (Space)");
   ImGui::SameLine();
-  if (button("Cancel search", true, third)) state.cancel_search = true;
+  if (button(fitting("Cancel search", "Cancel", third), true, third)) state.cancel_search = true;
   tip("Stop the search between solver iterations; Run again restarts it");
   if (button("Step event", true, third)) driver.step_event();
   tip("Let exactly one event through, then hold (Right arrow)");
   ImGui::SameLine();
-  if (button("Step expansion", true, third)) driver.step_expansion();
+  if (button(fitting("Step expansion", "Expansion", third), true, third)) driver.step_expansion();
   tip("Let events through up to and including the next expansion (E)");
   ImGui::SameLine();
-  if (button("Next milestone", true, third)) driver.next_milestone();
+  if (button(fitting("Next milestone", "Milestone", third), true, third)) driver.next_milestone();
   tip("Let events through up to and including the next milestone reached (M)");
 }
 
@@ -46,11 +52,13 @@ void draw_after_buttons(const SessionMirror& mirror, PanelState& state, float th
   if (button("Run again", true, third)) state.rerun = true;
   tip("A new search from the initial stance, same options (R)");
   ImGui::SameLine();
-  if (button("Closest stance", failed && mirror.result()->closest_node >= 0, third))
+  if (button(fitting("Closest stance", "Closest", third),
+             failed && mirror.result()->closest_node >= 0, third))
     state.show_closest = true;
   tip("Show the node whose stance came closest to the goal");
   ImGui::SameLine();
-  if (button("Export partial", failed && mirror.result()->closest_node >= 0, third))
+  if (button(fitting("Export partial", "Partial", third),
+             failed && mirror.result()->closest_node >= 0, third))
     state.export_partial = true;
   tip("Write the certified steps from the initial stance to the closest stance "
       "(OUT/partial_plan.json)");
@@ -90,7 +98,7 @@ void draw_status_text(const SearchDriver& driver, const SessionMirror& mirror,
   ImGui::Text("%s", to_string(driver.mode()));
   ImGui::SameLine();
   ImGui::TextColored(muted_text_color(),
-                     "%zu events \u00b7 %d nodes \u00b7 milestone %d of %d \u00b7 %.1f s",
+                     "%zu events \u00b7 %d nodes \u00b7 milestone %d/%d \u00b7 %.1f s",
                      events.size(), static_cast<int>(mirror.tree().nodes().size()), milestone,
                      figures.milestones, figures.elapsed_s);
 }
@@ -111,8 +119,8 @@ void draw_closest(const SessionMirror& mirror, const Stance& goal) {
     }
   }
   if (best < 0) return;
-  ImGui::TextColored(muted_text_color(), "closest to the goal stance: #%d, %d contact%s to change",
-                     best, best_difference, best_difference == 1 ? "" : "s");
+  ImGui::TextColored(muted_text_color(), "closest to the goal: #%d, %d contact%s to change", best,
+                     best_difference, best_difference == 1 ? "" : "s");
 }
 
 // The status line wraps in narrow windows (960 x 600).

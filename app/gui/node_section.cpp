@@ -105,9 +105,12 @@ void draw_torques(const NodeDetails& d) {
   std::snprintf(heading, sizeof(heading), "Joint torques / effort limits (worst %.0f %%)",
                 100.0 * d.worst_torque_ratio);
   section_title(heading);
-  if (!ImGui::BeginTable("torques", 2, ImGuiTableFlags_SizingStretchProp)) return;
+  // The figures beside the bar, in the panel's text colour: inside a bar, dark text is lost on
+  // the unfilled part and light text on a light fill.
+  if (!ImGui::BeginTable("torques", 3, ImGuiTableFlags_SizingStretchProp)) return;
   ImGui::TableSetupColumn("joint", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  ImGui::TableSetupColumn("bar", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+  ImGui::TableSetupColumn("bar", ImGuiTableColumnFlags_WidthStretch, 1.1f);
+  ImGui::TableSetupColumn("figures", ImGuiTableColumnFlags_WidthStretch, 0.8f);
   for (const TorqueRow* t : rows) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -117,12 +120,11 @@ void draw_torques(const NodeDetails& d) {
     const ImVec4 fill = t->ratio() > 0.9   ? rejected_color()
                         : t->ratio() > 0.6 ? unloaded_color()
                                            : loaded_color();
-    char label[64];
-    std::snprintf(label, sizeof(label), "%.1f / %.0f", t->tau, t->effort);
     ImGui::PushStyleColor(ImGuiCol_PlotHistogram, fill);
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.05f, 0.05f, 0.06f, 1.0f));
-    ImGui::ProgressBar(ratio, ImVec2(-FLT_MIN, ImGui::GetTextLineHeight() + 2.0f), label);
-    ImGui::PopStyleColor(2);
+    ImGui::ProgressBar(ratio, ImVec2(-FLT_MIN, ImGui::GetTextLineHeight()), "");
+    ImGui::PopStyleColor();
+    ImGui::TableNextColumn();
+    ImGui::Text("%.1f / %.0f", t->tau, t->effort);
   }
   ImGui::EndTable();
 }

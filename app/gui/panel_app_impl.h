@@ -66,6 +66,7 @@ class PanelApp {
   void carry_out_view_action(const gui::ScriptAction& action, std::ostream& out);
   gui::ScriptProgress progress() const;
   std::string status_text() const;
+  std::string shown_summary() const;
 
   const Scenario& scenario_;
   PanelOptions options_;

@@ -41,6 +41,7 @@ constexpr VerbSpec kVerbs[] = {
     {"reset view", ScriptVerb::ResetView, Args::None},
     {"tab inspector", ScriptVerb::TabInspector, Args::None},
     {"tab plots", ScriptVerb::TabPlots, Args::None},
+    {"print", ScriptVerb::Print, Args::None},
     {"screenshot", ScriptVerb::Screenshot, Args::PngPath},
     {"export view", ScriptVerb::ExportView, Args::None},
     {"export strip", ScriptVerb::ExportStrip, Args::None},

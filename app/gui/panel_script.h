@@ -11,6 +11,7 @@
 //   select node N | select event N | timeline STEP
 //   orbit DX DY | zoom CLICKS | reset view     the mouse, driven through ImGui like a user's
 //   tab inspector | tab plots
+//   print                    one line: what the view and the inspector show (event, contacts)
 //   screenshot FILE.png | export view | export strip
 //
 // Parsing is pure (no window): a bad line is an InputError naming the file, the line, what was
@@ -43,6 +44,7 @@ enum class ScriptVerb {
   ResetView,
   TabInspector,
   TabPlots,
+  Print,
   Screenshot,
   ExportView,
   ExportStrip,

@@ -5,8 +5,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <ostream>
+#include <sstream>
 
+#include "app/gui/node_details.h"
 #include "app/gui/panel_app_impl.h"
 #include "app/gui/script_pointer.h"
 #include "app/gui/tree_section.h"
@@ -34,6 +37,25 @@ ScriptProgress PanelApp::progress() const {
   now.frame_work = !pointer_moves_.empty() || !pending_screenshot_.empty() || state_.open_tab >= 0;
   now.status = status_text();
   return now;
+}
+
+// What the view and the inspector show, on one line: "event 31 (milestone, node 12): l_sole on
+// floor (loaded, 572 N), r_sole on floor (unloaded)".
+std::string PanelApp::shown_summary() const {
+  const long shown = shown_event();
+  if (shown < 0) return "the initial configuration (no event yet)";
+  const SearchEvent& e = mirror_.events()[shown];
+  std::ostringstream line;
+  line << "event " << e.number << " (" << to_string(e.kind) << ", node " << e.node << "): ";
+  const NodeDetails details = node_details(scenario_.scene, e);
+  if (details.contacts.empty()) line << "no contact";
+  for (size_t i = 0; i < details.contacts.size(); ++i) {
+    const ContactRow& c = details.contacts[i];
+    line << (i > 0 ? ", " : "") << c.name << " (" << (c.loaded ? "loaded" : "unloaded");
+    if (c.vertices > 0) line << ", " << std::lround(c.force_W.norm()) << " N";
+    line << ")";
+  }
+  return line.str();
 }
 
 void PanelApp::advance_script(std::ostream& out, std::ostream& err) {
@@ -123,6 +145,9 @@ void PanelApp::carry_out_view_action(const ScriptAction& action, std::ostream& o
       return;
     case ScriptVerb::Screenshot:
       pending_screenshot_ = action.path;
+      return;
+    case ScriptVerb::Print:
+      out << "panel: shown: " << shown_summary() << "\n";
       return;
     case ScriptVerb::ExportView:
       state_.export_view = true;

@@ -30,9 +30,9 @@ TEST(PanelScript, EveryActionOfTheGrammarParses) {
       "wait-for plan\nwait-for failure\nwait-for end\nwait-for event 12\n"
       "select node 3\nselect event 0\ntimeline 4\norbit -120 40.5\nzoom -2\nreset view\n"
       "tab plots\ntab inspector\nscreenshot out/a.png\nexport view\nexport strip\ncancel\n"
-      "rerun\nquit\n",
+      "rerun\nprint\nquit\n",
       "s.txt");
-  ASSERT_EQ(a.size(), 26u);
+  ASSERT_EQ(a.size(), 27u);
   EXPECT_EQ(a[0].verb, ScriptVerb::Run);
   EXPECT_EQ(a[0].line, 2);
   EXPECT_EQ(a[2].verb, ScriptVerb::StepEvent);
@@ -50,6 +50,7 @@ TEST(PanelScript, EveryActionOfTheGrammarParses) {
   EXPECT_EQ(a[16].a, -2.0);
   EXPECT_EQ(a[20].verb, ScriptVerb::Screenshot);
   EXPECT_EQ(a[20].path, "out/a.png");
+  EXPECT_EQ(a[25].verb, ScriptVerb::Print);
   EXPECT_EQ(a.back().verb, ScriptVerb::Quit);
 }
 

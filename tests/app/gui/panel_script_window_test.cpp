@@ -103,6 +103,15 @@ TEST_F(ScriptedPanel, ResetViewRestoresTheFirstFraming) {
   EXPECT_EQ(first, reset) << "Reset view brought back the first view exactly";
 }
 
+// A milestone event shows the node's loaded contacts (it once showed "Contacts: none").
+TEST_F(ScriptedPanel, AMilestoneEventListsItsLoadedContacts) {
+  const test::XvfbRun r = run("milestone", "next milestone\nprint\nquit\n", "--paused");
+  ASSERT_EQ(r.code, 0) << r.log;
+  const std::regex shown(
+      "panel: shown: event [0-9]+ \\(milestone, node [0-9]+\\): [^\n]*\\(loaded, [1-9][0-9]* N\\)");
+  EXPECT_TRUE(std::regex_search(r.log, shown)) << r.log;
+}
+
 TEST_F(ScriptedPanel, ACancelledSearchRunsAgainToThePlan) {
   const test::XvfbRun r =
       run("rerun", "wait-for event 5\ncancel\nwait-for failure\nrerun\nwait-for plan\nquit\n", "");
@@ -128,21 +137,27 @@ TEST_F(ScriptedPanel, AFailedWaitEndsThePanelWithExitTwo) {
                                "plan (cancelled)"));
 }
 
-// SIGTERM while the search runs: the window closes as if the user closed it, the search is
-// cancelled and the panel's figures printed, exit 0 (docs/README.md).
-TEST_F(ScriptedPanel, SigtermEndsThePanelLikeClosingTheWindow) {
-  dir_ = test::temp_dir("panel_sigterm");
+// SIGTERM or SIGINT while the search runs: the window closes as if the user closed it, the search
+// is cancelled and the panel's figures printed, exit 0 (README.md, The panel).
+class PanelSignal : public ScriptedPanel, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(PanelSignal, EndsThePanelLikeClosingTheWindow) {
+  const std::string signal = GetParam();
+  dir_ = test::temp_dir("panel_" + signal);
   std::ofstream(dir_ / "script.txt") << "speed 2\nwait 600\n";
   const std::string panel = std::string(STANCEPLAN_BINARY) + " panel " +
                             test::source_path("scenarios/humanoid_walk.yaml") +
                             " --threads 1 --out " + (dir_ / "out").string() + " --script " +
                             (dir_ / "script.txt").string();
   const test::XvfbRun r = test::run_command_in_xvfb(
-      "sh -c '" + panel + " & pid=$!; sleep 5; kill -TERM $pid; wait $pid; echo exit=$?'", dir_);
-  EXPECT_THAT(r.log, HasSubstr("panel: SIGTERM received: closing the window")) << r.log;
+      "sh -c '" + panel + " & pid=$!; sleep 5; kill -" + signal + " $pid; wait $pid; echo exit=$?'",
+      dir_);
+  EXPECT_THAT(r.log, HasSubstr("panel: SIG" + signal + " received: closing the window")) << r.log;
   EXPECT_THAT(r.log, HasSubstr("search stopped")) << r.log;
   EXPECT_THAT(r.log, HasSubstr("exit=0")) << r.log;
 }
+
+INSTANTIATE_TEST_SUITE_P(TermAndInt, PanelSignal, ::testing::Values("TERM", "INT"));
 
 }  // namespace
 }  // namespace stanceplan
