@@ -155,6 +155,13 @@ DistanceResult signed_distance(const CollisionModel& model, CollisionData& data,
   const std::vector<CollisionShape>& shapes = model.shapes();
   for (int sa = link_a.first_shape; sa < link_a.first_shape + link_a.num_shapes; ++sa) {
     for (int sb = link_b.first_shape; sb < link_b.first_shape + link_b.num_shapes; ++sb) {
+      // A pose that is not finite (a configuration with NaN, from a diverging solve) has no
+      // distance, and libccd's GJK asserts (aborts the process) on it: no FCL call, NaN out.
+      if (!data.T_WG[sa].matrix().allFinite() || !data.T_WG[sb].matrix().allFinite()) {
+        best.ok = false;
+        best.distance = std::numeric_limits<double>::quiet_NaN();
+        return best;
+      }
       CoreDistance d;
       try {
         d = core_distance(shapes[sa], data.T_WG[sa], shapes[sb], data.T_WG[sb], request,

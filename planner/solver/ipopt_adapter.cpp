@@ -18,6 +18,14 @@
 namespace stanceplan {
 namespace {
 
+// Derivatives with a NaN or an infinity (a degenerate geometry at the iterate) are reported to
+// Ipopt as an evaluation error, so that it never computes a step from them.
+bool all_finite(const Ipopt::Number* values, Ipopt::Index count) {
+  for (Ipopt::Index i = 0; i < count; ++i)
+    if (!std::isfinite(values[i])) return false;
+  return true;
+}
+
 std::mutex& ipopt_mutex() {
   static std::mutex mutex;
   return mutex;
@@ -52,9 +60,10 @@ class PostureTnlp : public Ipopt::TNLP {
     f = nlp_.objective(x, new_x);
     return std::isfinite(f);
   }
-  bool eval_grad_f(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Number* grad) override {
+  bool eval_grad_f(Ipopt::Index n, const Ipopt::Number* x, bool new_x,
+                   Ipopt::Number* grad) override {
     nlp_.objective_gradient(x, new_x, grad);
-    return true;
+    return all_finite(grad, n);
   }
   bool eval_g(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Index m,
               Ipopt::Number* g) override {
@@ -63,14 +72,15 @@ class PostureTnlp : public Ipopt::TNLP {
       if (!std::isfinite(g[i])) return false;  // Ipopt backs off instead of using a NaN
     return true;
   }
-  bool eval_jac_g(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Index, Ipopt::Index,
-                  Ipopt::Index* rows, Ipopt::Index* cols, Ipopt::Number* values) override {
+  bool eval_jac_g(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Index,
+                  Ipopt::Index nele_jac, Ipopt::Index* rows, Ipopt::Index* cols,
+                  Ipopt::Number* values) override {
     if (values == nullptr) {
       nlp_.structure(rows, cols);
       return true;
     }
     nlp_.jacobian_values(x, new_x, values);
-    return true;
+    return all_finite(values, nele_jac);  // Ipopt stops on it instead of stepping to NaN
   }
   // Variable scaling: the contact force coefficients are in newtons (tens to hundreds), q in
   // metres and radians. Scaling lambda by the expected coefficient per vertex makes them O(1),
@@ -97,15 +107,15 @@ class PostureTnlp : public Ipopt::TNLP {
   }
 
   bool eval_h(Ipopt::Index, const Ipopt::Number* x, bool new_x, Ipopt::Number obj_factor,
-              Ipopt::Index, const Ipopt::Number* lambda, bool, Ipopt::Index, Ipopt::Index* rows,
-              Ipopt::Index* cols, Ipopt::Number* values) override {
+              Ipopt::Index, const Ipopt::Number* lambda, bool, Ipopt::Index nele_hess,
+              Ipopt::Index* rows, Ipopt::Index* cols, Ipopt::Number* values) override {
     if (options_.hessian == HessianMode::LimitedMemory) return false;
     if (values == nullptr) {
       nlp_.hessian_structure(rows, cols);
       return true;
     }
     nlp_.hessian_values(x, new_x, obj_factor, lambda, values);
-    return true;
+    return all_finite(values, nele_hess);
   }
 
   // Cancellation between iterations (the search's cancel flag).

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "tests/planner/collision/collision_test_scene.h"
@@ -206,6 +207,22 @@ TEST(SignedDistance, ExactlyTouchingBoxesGiveZero) {
     EXPECT_NEAR(r.p_A_W.z(), 0.0, 1e-12);
     EXPECT_NEAR(r.p_B_W.z(), 0.0, 1e-12);
   }
+}
+
+// A configuration with NaN (a diverging solve's iterate) has no distance: NaN and not ok, and no
+// call into FCL, whose libccd GJK asserts and aborts the process on such poses (it once ended a
+// search of the dual-arm hand-over with pads allowed on any facet).
+TEST(SignedDistance, ANonFiniteConfigurationGivesNaNNotACrash) {
+  Scene s;
+  const int pair = s.pair(s.floor, "ground", s.body, "torso");
+  Eigen::VectorXd q = s.system.neutral_configuration();
+  q.segment(s.system.offset(s.arm), 4) << 0.0, -1.0, 0.0, 0.0;
+  q.segment<3>(s.system.offset(s.body)) << 1.0, 1.0, 0.5;
+  ASSERT_TRUE(s.distance(q, pair).ok);
+  q(s.system.offset(s.body)) = std::numeric_limits<double>::quiet_NaN();
+  const DistanceResult r = s.distance(q, pair);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(std::isnan(r.distance));
 }
 
 TEST(SignedDistance, SphereBoxSeparationAndPenetrationDepth) {
