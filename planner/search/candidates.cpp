@@ -77,6 +77,55 @@ bool allowed_now(const Scene& scene, const Contact& c, const Stance& stance, con
   return true;
 }
 
+// The rigid body a surface's link belongs to: the link itself or its nearest ancestor reached
+// through fixed joints; every link that never moves (the environment, a fixed robot's base) is
+// one body, the world {-1, -1}.
+std::pair<int, int> rigid_body(const Scene& scene, SurfaceRef r) {
+  const int link = scene.surfaces.get(r).link;
+  if (link_is_static(scene, r.entity, link)) return {-1, -1};
+  const Model& model = *scene.system.entity(r.entity).model;
+  int l = link;
+  while (l > 0 && !model.joints[model.links[l].parent_joint].movable())
+    l = model.links[l].parent_link;
+  return {r.entity, l};
+}
+
+Eigen::Vector3d normal_W(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef r) {
+  const Surface& s = scene.surfaces.get(r);
+  return data[r.entity].T_WL[s.link].linear() * s.normal_L();
+}
+
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+}
+
+// A planar contact turns its s1 normal against its s2 normal. Two contacts between the same two
+// rigid bodies B and C therefore fix the angle between their normals on B to the angle between
+// their normals on C (each angle is the same at every configuration). A candidate whose angles
+// differ from an existing contact's by more than kRigidAngleTolerance can never be realised: a
+// side of a rigid cylinder standing on a platform cannot also lie on that platform, nor on the
+// floor beneath it (exact, up to the solver's tolerance on the normals).
+constexpr double kRigidAngleTolerance = 1e-3;  // rad
+
+bool rigidly_incompatible(const Scene& scene, const std::vector<ModelData>& data, const Contact& c,
+                          const Stance& stance) {
+  const auto b1 = rigid_body(scene, c.s1), b2 = rigid_body(scene, c.s2);
+  for (const Contact& k : stance.contacts()) {
+    const auto k1 = rigid_body(scene, k.s1), k2 = rigid_body(scene, k.s2);
+    // The normals of one body paired with those of the other, in the same order on both sides.
+    SurfaceRef on_b = k.s1, on_c = k.s2;
+    if (b1 == k2 && b2 == k1)
+      std::swap(on_b, on_c);
+    else if (!(b1 == k1 && b2 == k2))
+      continue;
+    const double on_first = angle_between(normal_W(scene, data, c.s1), normal_W(scene, data, on_b));
+    const double on_second =
+        angle_between(normal_W(scene, data, c.s2), normal_W(scene, data, on_c));
+    if (std::abs(on_first - on_second) > kRigidAngleTolerance) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool link_is_static(const Scene& scene, int entity, int link) {
@@ -143,6 +192,7 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       if (stance.find(c) >= 0 || stance.uses_surface(c.s1) || used_as_s1(c.s2)) continue;
       if (!allowed_pair(scene, c, options) || !allowed_now(scene, c, stance, goal, options))
         continue;
+      if (rigidly_incompatible(scene, data, c, stance)) continue;
       if (surface_gap(scene, data, c.s1, c.s2) > options.contact_reach) continue;
       out.push_back({true, c});
     }

@@ -7,6 +7,9 @@
 //  - both surfaces on bodies that never move (the environment, a fixed robot's base): their
 //    relative placement is constant, so the contact is either always or never there (exact);
 //  - a surface already in the stance as s1, or s2 already the s1 of a contact (stance rule);
+//  - two contacts between the same two rigid bodies whose surface normals make different angles
+//    on the two bodies (a planar contact turns s1's normal against s2's, so the angles must agree;
+//    exact): a side of a standing cylinder on the platform it stands on, or on the floor;
 //  - removing the last contact that supports a floating body with mass: no equilibrium is
 //    possible without support (exact), and fixed contacts are never removed (docs/METHOD.md);
 //  - removing a contact that leaves such a body fewer than SearchOptions::min_contacts (option);

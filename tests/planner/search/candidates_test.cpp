@@ -1,8 +1,10 @@
 // Candidate enumeration (Adj+ / Adj-) and its documented pruning options.
 #include <gtest/gtest.h>
 
+#include "planner/io/scenario.h"
 #include "planner/model/kinematics.h"
 #include "planner/search/candidates.h"
+#include "tests/support/paths.h"
 #include "tests/support/scenes.h"
 
 namespace stanceplan {
@@ -77,6 +79,40 @@ TEST(Candidates, MinContactsKeepsThatManyContactsOnAFloatingBody) {
   const auto from_three = enumerate_candidates(scene, data, three, three, options);
   for (const char* s1 : {"robot/l_sole", "robot/r_sole", "robot/r_palm"})
     EXPECT_TRUE(offers(from_three, scene, s1, false)) << s1;
+}
+
+// Two contacts between the same two rigid bodies must turn their normals alike: with the
+// cylinder standing on platform A, none of its sides is offered on platform A or on the floor
+// (their normals make 90 degrees with its bottom's, the planes' make 0), while its top is not
+// offered either (180 vs 0), the pads still are, and the cylinder's sides on nothing else rigid.
+TEST(Candidates, RigidBodiesKeepTheAnglesOfTheirContacts) {
+  const Scenario scenario =
+      load_scenario(test::source_path("scenarios/untuned/dual_arm_handover.yaml"));
+  const Scene& scene = scenario.scene;
+  const auto data = system_kinematics(scene.system, scenario.initial_configuration);
+  const Stance standing = scenario.stance(scenario.initial_stance);
+  SearchOptions options;
+  options.contact_reach = 10.0;  // every pair within reach: only the rule prunes
+  const std::vector<Candidate> list =
+      enumerate_candidates(scene, data, standing, scenario.stance(scenario.goal_stance), options);
+  int cylinder_on_env = 0, pads_on_cylinder = 0, cylinder_on_platform_b = 0;
+  for (const Candidate& c : list) {
+    if (!c.add) continue;
+    const std::string s1 = scene.surfaces.id(scene.system, c.contact.s1),
+                      s2 = scene.surfaces.id(scene.system, c.contact.s2);
+    const bool cylinder = s1.rfind("cyl/", 0) == 0 || s2.rfind("cyl/", 0) == 0;
+    const bool env = s1.rfind("env/", 0) == 0 || s2.rfind("env/", 0) == 0;
+    if (cylinder && env) ++cylinder_on_env;
+    if (cylinder && env && (s1 == "env/platform_b" || s2 == "env/platform_b"))
+      ++cylinder_on_platform_b;
+    if (cylinder && !env) ++pads_on_cylinder;
+  }
+  // The bottom already stands on A: on the floor and on B (planes parallel to A's) only the
+  // bottom itself would keep the angle, and it is in use; so no cylinder surface on the
+  // environment at all.
+  EXPECT_EQ(cylinder_on_env, 0);
+  EXPECT_EQ(cylinder_on_platform_b, 0);
+  EXPECT_GT(pads_on_cylinder, 0);
 }
 
 }  // namespace
