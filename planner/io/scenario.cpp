@@ -436,7 +436,8 @@ class ScenarioReader {
     expect_keys(node, "search",
                 {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
                  "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
-                 "max_retries", "contact_pairs", "last_contacts", "min_contacts"});
+                 "max_retries", "contact_pairs", "last_contacts", "min_contacts",
+                 "defer_repeated_failures"});
     if (node["contact_pairs"])
       read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"])
@@ -457,6 +458,9 @@ class ScenarioReader {
       s.search.stance_weight = number(node["stance_weight"], "search.stance_weight");
     if (node["max_retries"])
       s.search.max_retries = integer(node["max_retries"], "search.max_retries", 0);
+    if (node["defer_repeated_failures"])
+      s.search.defer_repeated_failures =
+          boolean(node["defer_repeated_failures"], "search.defer_repeated_failures");
     if (node["max_nodes"]) s.search.max_nodes = integer(node["max_nodes"], "search.max_nodes", 1);
     if (node["time_limit"])
       s.search.time_limit_s = positive(node["time_limit"], "search.time_limit");

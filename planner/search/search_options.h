@@ -35,6 +35,10 @@ struct SearchOptions {
   double stance_weight = 0.1;
   // Backtracking: further attempts from other initial guesses per failed (node, candidate).
   int max_retries = 2;
+  // A candidate that failed its first attempt from the same stance, posture and relative placement
+  // of its surfaces is deferred to backtracking instead of being solved at once (failure_memo.h; a
+  // heuristic: it orders, never prunes).
+  bool defer_repeated_failures = true;
 };
 
 }  // namespace stanceplan

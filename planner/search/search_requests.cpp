@@ -60,9 +60,17 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   if (!search_.publish(expansion_event(node, t_, int(tree_.size())))) return std::nullopt;
   std::vector<Attempt> batch;
   const auto data = system_kinematics(problem_.scene.system, node.q());
-  for (const Candidate& c :
-       enumerate_candidates(problem_.scene, data, node.stance(), goal_, options_for_milestone(t_)))
-    if (!undoes_last_step(node, c)) batch.push_back({n, c, 0});
+  for (const Candidate& c : enumerate_candidates(problem_.scene, data, node.stance(), goal_,
+                                                 options_for_milestone(t_))) {
+    if (undoes_last_step(node, c)) continue;
+    // Failed from the same situation before: solved only when backtracking (failure_memo.h).
+    const bool repeated = options_.defer_repeated_failures &&
+                          failures_.seen(problem_.scene, data, node.q(), node.stance(), c);
+    if (repeated)
+      retries_.push_back({n, c, 0});
+    else
+      batch.push_back({n, c, 0});
+  }
   return batch;
 }
 

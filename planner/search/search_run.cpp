@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "planner/model/kinematics.h"
 #include "planner/search/plan_path.h"
 #include "planner/search/search_event_builders.h"
 
@@ -151,9 +152,12 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
         tree_.push_back(std::move(child));
         open_.push_back(e.node);
       }
-    } else if (a.attempt < options_.max_retries) {
-      const bool towards_goal = a.candidate.add && goal_.find(a.candidate.contact) >= 0;
-      (towards_goal ? urgent_ : retries_).push_back({a.node, a.candidate, a.attempt + 1});
+    } else {
+      if (a.attempt == 0) remember_failure(a);
+      if (a.attempt < options_.max_retries) {
+        const bool towards_goal = a.candidate.add && goal_.find(a.candidate.contact) >= 0;
+        (towards_goal ? urgent_ : retries_).push_back({a.node, a.candidate, a.attempt + 1});
+      }
     }
     e.milestone = t_;
     e.nodes = int(tree_.size());
@@ -164,6 +168,15 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
     }
   }
   return std::nullopt;
+}
+
+// A candidate failed its first attempt (from the node's own configuration): remembered with the
+// situation it was tried from.
+void StanceSearch::Run::remember_failure(const Attempt& a) {
+  if (!options_.defer_repeated_failures) return;
+  const SearchNode& node = tree_[size_t(a.node)];
+  const auto data = system_kinematics(problem_.scene.system, node.q());
+  failures_.record(problem_.scene, data, node.q(), node.stance(), a.candidate);
 }
 
 SearchResult StanceSearch::Run::finish(PlanStatus status, std::string message) {

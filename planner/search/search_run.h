@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "planner/search/candidates.h"
+#include "planner/search/failure_memo.h"
 #include "planner/search/guide_path.h"
 #include "planner/search/stance_search.h"
 #include "planner/solver/posture_solver.h"
@@ -48,6 +49,7 @@ class StanceSearch::Run {
   std::optional<SearchResult> take_results(const std::vector<Attempt>& batch,
                                            const std::vector<PostureRequest>& requests,
                                            const std::vector<PostureResult>& results);
+  void remember_failure(const Attempt& attempt);
   SearchResult finish(PlanStatus status, std::string message);
   SearchResult give_up(PlanStatus status, std::string message);
   SearchResult found(int goal_node);
@@ -94,6 +96,7 @@ class StanceSearch::Run {
   // Backtracking queues: failed candidates that would add a goal contact are retried at once from
   // other initial guesses; the others when the open queue is empty.
   std::deque<Attempt> urgent_, retries_;
+  FailureMemo failures_;  // candidates that failed every attempt (defer_repeated_failures)
   // The milestone each node was last expanded for (-1: not yet), for the last form of
   // backtracking.
   std::vector<int> expanded_for_;
