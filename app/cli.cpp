@@ -18,6 +18,27 @@
 namespace stanceplan::app {
 namespace {
 
+void add_collision_matrix_options(CLI::App& cmd, InspectOptions& options) {
+  CLI::Option* matrix = cmd.add_flag(
+      "--collision-matrix", options.collision_matrix,
+      "print the self-collision matrix computed as MoveIt's setup assistant does (pairs adjacent, "
+      "always in collision over the samples, default) instead of the description");
+  matrix->excludes(cmd.get_option("--srdf"));
+  cmd.add_option("--srdf-out", options.srdf_out,
+                 "with --collision-matrix: write the pairs as SRDF <disable_collisions>")
+      ->needs(matrix);
+  cmd.add_option("--samples", options.samples,
+                 "with --collision-matrix: random configurations (default 1000)")
+      ->check(whole_number_in(1, 10000000))
+      ->needs(matrix);
+  cmd.add_option("--seed", options.seed, "with --collision-matrix: random seed (default 0)")
+      ->needs(matrix);
+  cmd.add_flag("--never", options.never,
+               "with --collision-matrix: also disable pairs in collision in no sample (MoveIt "
+               "does; unsound for postures no sample came near)")
+      ->needs(matrix);
+}
+
 void add_inspect(CLI::App& cli, InspectOptions& options) {
   CLI::App* cmd = cli.add_subcommand("inspect",
                                      "Describe a URDF model: kind, joints, limits, mass, "
@@ -33,6 +54,7 @@ void add_inspect(CLI::App& cli, InspectOptions& options) {
                   "one-link model, fixed otherwise)")
       ->check(CLI::IsMember({"auto", "fixed", "floating", "object", "environment"}));
   cmd->add_flag("--json", options.json, "print one JSON object");
+  add_collision_matrix_options(*cmd, options);
 }
 
 void add_posture(CLI::App& cli, PostureOptions& options) {

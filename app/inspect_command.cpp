@@ -5,10 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "planner/collision/collision_matrix.h"
 #include "planner/collision/collision_model.h"
 #include "planner/contact/surface_file.h"
 #include "planner/model/entity.h"
 #include "planner/model/urdf_loader.h"
+#include "planner/util/atomic_file.h"
 
 namespace stanceplan::app {
 namespace {
@@ -102,7 +104,15 @@ json describe(const Model& model, EntityKind kind, const std::vector<Surface>& s
                             {"vertices", vertices}});
   }
   out["surfaces"] = surface_list;
-  out["warnings"] = model.load_warnings;
+  // The ignored inertia tensors: one warning line, and each link with its fault.
+  json warnings = model.load_warnings;
+  const std::string inertias = ignored_inertias_warning(model.source_file, model.ignored_inertias);
+  if (!inertias.empty()) warnings.push_back(inertias);
+  out["warnings"] = warnings;
+  json ignored = json::array();
+  for (const IgnoredInertia& i : model.ignored_inertias)
+    ignored.push_back({{"link", i.link}, {"fault", i.fault}});
+  out["ignored_inertias"] = ignored;
   return out;
 }
 
@@ -160,10 +170,59 @@ json collision_summary(const std::shared_ptr<const Model>& model, EntityKind kin
           {"srdf_disabled_pairs", collision.num_srdf_disabled_pairs()}};
 }
 
+namespace {
+
+// --collision-matrix: one line per disabled pair ("  link1 / link2: reason"), or one JSON object;
+// --srdf-out writes them as an SRDF, atomically.
+int inspect_collision_matrix(const InspectOptions& options,
+                             const std::shared_ptr<const Model>& model, std::ostream& out) {
+  CollisionMatrixOptions matrix_options;
+  matrix_options.samples = options.samples;
+  matrix_options.seed = options.seed;
+  matrix_options.include_never = options.never;
+  const CollisionMatrix matrix = compute_collision_matrix(model, matrix_options);
+  auto name = [&](int link) { return model->links[link].name; };
+  if (options.json) {
+    json pairs = json::array();
+    for (const MatrixPair& p : matrix.pairs)
+      pairs.push_back({{"link1", name(p.link_a)},
+                       {"link2", name(p.link_b)},
+                       {"reason", to_string(p.reason)},
+                       {"collisions", p.collisions}});
+    out << json{{"robot", matrix.robot},
+                {"samples", matrix.samples},
+                {"seed", matrix.seed},
+                {"pairs", pairs}}
+               .dump(2)
+        << "\n";
+  } else {
+    out << "self-collision matrix of " << matrix.robot << ": " << matrix.pairs.size()
+        << (matrix.pairs.size() == 1 ? " pair" : " pairs") << " disabled ("
+        << describe_counts(matrix) << ")\n";
+    for (const MatrixPair& p : matrix.pairs) {
+      out << "  " << name(p.link_a) << " / " << name(p.link_b) << ": " << to_string(p.reason);
+      if (p.reason != DisabledReason::Adjacent)
+        out << " (" << p.collisions << " of " << matrix.samples << " samples)";
+      out << "\n";
+    }
+  }
+  if (!options.srdf_out.empty()) {
+    write_file_atomically(options.srdf_out, collision_matrix_srdf(*model, matrix));
+    if (!options.json) out << "wrote " << options.srdf_out << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
 int run_inspect(const InspectOptions& options, std::ostream& out, std::ostream& err) {
   UrdfOptions urdf_options;
   urdf_options.packages.directories = options.package_paths;
   const auto model = std::make_shared<const Model>(load_urdf(options.urdf, urdf_options));
+  if (options.collision_matrix) {
+    for (const std::string& w : model->load_warnings) err << "warning: " << w << "\n";
+    return inspect_collision_matrix(options, model, out);
+  }
   std::vector<Surface> surfaces;
   if (!options.surfaces.empty()) surfaces = load_surface_file(options.surfaces, *model);
   const EntityKind kind = decide_kind(options, *model);
@@ -174,7 +233,8 @@ int run_inspect(const InspectOptions& options, std::ostream& out, std::ostream& 
   else
     print_text(description, out);
   if (options.json)
-    for (const std::string& w : model->load_warnings) err << "warning: " << w << "\n";
+    for (const json& w : description["warnings"])
+      err << "warning: " << w.get<std::string>() << "\n";
   return 0;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // `stanceplan inspect MODEL.urdf`: what a model is (kind, dofs, joints and limits, mass, links,
-// surfaces, collision geometry), as text or one JSON object.
+// surfaces, collision geometry), as text or one JSON object; with --collision-matrix, the link
+// pairs a computed self-collision matrix disables, optionally written as an SRDF.
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -14,6 +16,13 @@ struct InspectOptions {
   std::vector<std::string> package_paths;
   std::string kind = "auto";  // auto | fixed | floating | object | environment
   bool json = false;
+  // --collision-matrix: print the computed self-collision matrix instead of the description
+  // (planner/collision/collision_matrix.h); --srdf-out writes it as an SRDF.
+  bool collision_matrix = false;
+  std::string srdf_out;
+  int samples = 1000;
+  uint64_t seed = 0;
+  bool never = false;
 };
 
 // Throws InputError on bad input.

@@ -15,10 +15,12 @@
 #include <ostream>
 #include <sstream>
 
+#include "app/collision_matrix_note.h"
 #include "app/exit_codes.h"
 #include "app/interrupt_handler.h"
 #include "app/live/plan_session.h"
 #include "app/live/snapshot_writer.h"
+#include "app/model_warnings.h"
 #include "app/pipeline.h"
 #include "app/plan_output.h"
 #include "planner/search/plan_path.h"
@@ -116,6 +118,8 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   Planned planned;
   planned.scenario = std::make_shared<const Scenario>(load_scenario(options.scenario));
   const Scenario& scenario = *planned.scenario;
+  print_computed_collision_matrices(scenario.scene, err);
+  print_model_warnings(scenario.scene, err);
   SearchOptions search = scenario.search;
   if (options.threads) search.threads = *options.threads;
   if (options.time_limit) search.time_limit_s = *options.time_limit;

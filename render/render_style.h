@@ -26,11 +26,12 @@ struct RenderStyle {
   bool background_gradient = true;
   Color background_top = rgb_hex(0xdfe6ee);
   Color background_bottom = rgb_hex(0xfbfbfc);  // also the flat background when no gradient
-  bool grid = true;                             // grid lines on the ground plane z = ground_z
-  double ground_z = 0.0;
+  // The ground is placed per frame (render/scene/ground.h, docs/RENDERING.md): an environment's
+  // floor under the whole subject, else a plane under the lowest point of the scene.
+  bool grid = true;            // grid lines on the ground
   double grid_spacing = 0.25;  // minor lines; every 4th line is a major one
   Color grid_color = rgb_hex(0x6f7884, 0.35f);
-  bool floor = true;  // a floor on the ground plane when the scene has no environment
+  bool floor = true;  // the ground plane is opaque when no environment provides the floor
   Color floor_color = rgb_hex(0xeceae6);
 
   // Geometry.

@@ -67,12 +67,13 @@ struct FrameUniforms {
   float shadow_bias = 0.0f;
   Eigen::Vector2f fade_center;
   Eigen::Vector2f fade_range;
+  double ground_z = 0.0;
 };
 
 // Per item, what the frame decided about it.
 struct ItemState {
   bool ghosted = false;    // environment hiding the subject: drawn see-through
-  bool on_ground = false;  // environment whose top lies on the ground plane (a floor slab)
+  bool on_ground = false;  // environment whose top is the ground (the environment's floor)
 };
 
 }  // namespace
@@ -162,7 +163,7 @@ struct Renderer::Impl {
                         const Eigen::AlignedBox3d& focus, const Lights& lights,
                         const Eigen::Matrix4d& light_matrix, double light_depth_range);
   void draw_background();
-  void draw_ground_quad(const Eigen::AlignedBox3d& focus, bool floor);
+  void draw_ground_quad(const Eigen::AlignedBox3d& focus, double z, bool floor);
 };
 
 ShaderProgram& Renderer::Impl::use_surface(unsigned flags) {
@@ -197,7 +198,7 @@ ShaderProgram& Renderer::Impl::use_surface(unsigned flags) {
     p.set("u_fade_range", uniforms.fade_range);
     p.set("u_grid_color", style.grid ? style.grid_color : with_alpha(style.grid_color, 0.0f));
     p.set("u_grid_spacing", static_cast<float>(style.grid_spacing));
-    p.set("u_ground_z", static_cast<float>(style.ground_z));
+    p.set("u_ground_z", static_cast<float>(uniforms.ground_z));
   }
   return *program;
 }
@@ -210,10 +211,11 @@ std::vector<ItemState> Renderer::Impl::classify(const DrawList& list, const Eige
     const std::vector<bool> ghosted = occluding_environment(list, eye, focus);
     for (size_t i = 0; i < states.size(); ++i) states[i].ghosted = ghosted[i];
   }
+  if (!list.ground.environment_floor) return states;
   for (size_t i = 0; i < states.size(); ++i) {
     if (!list.items[i].environment) continue;
     const Eigen::AlignedBox3d box = list.items[i].world_bounds();
-    states[i].on_ground = !box.isEmpty() && std::abs(box.max().z() - style.ground_z) < 0.01;
+    states[i].on_ground = !box.isEmpty() && std::abs(box.max().z() - list.ground.z) < 0.01;
   }
   return states;
 }
@@ -223,8 +225,8 @@ Eigen::Matrix4d Renderer::Impl::shadow_pass(const DrawList& list,
                                             const Lights& lights, const Eigen::AlignedBox3d& focus,
                                             std::vector<std::unique_ptr<GpuMesh>>& frame_meshes,
                                             double* depth_range) {
-  const ShadowFrustum frustum = shadow_frustum(lights, shadow_focus(list, focus, style.ground_z),
-                                               list.bounds(true), style.ground_z);
+  const ShadowFrustum frustum = shadow_frustum(lights, shadow_focus(list, focus, list.ground.z),
+                                               list.bounds(true), list.ground.z);
   *depth_range = frustum.depth_range;
   const Eigen::Matrix4d& light_matrix = frustum.light_matrix;
   if (!style.shadows) return light_matrix;
@@ -329,10 +331,10 @@ void Renderer::Impl::draw_background() {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void Renderer::Impl::draw_ground_quad(const Eigen::AlignedBox3d& focus, bool floor) {
+void Renderer::Impl::draw_ground_quad(const Eigen::AlignedBox3d& focus, double z, bool floor) {
   const double radius = ground_radius(focus);
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.translation() = Eigen::Vector3d(focus.center().x(), focus.center().y(), style.ground_z);
+  T.translation() = Eigen::Vector3d(focus.center().x(), focus.center().y(), z);
   const unsigned flags =
       kFloorQuad | kFade | (style.lighting ? kLit : 0u) | (style.shadows ? kShadows : 0u);
   ShaderProgram& program = use_surface(flags);
@@ -350,10 +352,11 @@ void Renderer::Impl::prepare_uniforms(const DrawList& list, const Camera& camera
   const Eigen::Matrix4d view = camera.view_matrix();
   const double radius = ground_radius(focus);
   Eigen::AlignedBox3d everything = list.bounds(true);
+  const double ground_z = list.ground.z;
   everything.extend(
-      Eigen::Vector3d(focus.center().x() - radius, focus.center().y() - radius, style.ground_z));
+      Eigen::Vector3d(focus.center().x() - radius, focus.center().y() - radius, ground_z));
   everything.extend(
-      Eigen::Vector3d(focus.center().x() + radius, focus.center().y() + radius, style.ground_z));
+      Eigen::Vector3d(focus.center().x() + radius, focus.center().y() + radius, ground_z));
   Eigen::AlignedBox3d everything_V;
   extend_transformed(everything, view, &everything_V);
   const double far = std::max(-everything_V.min().z() * 1.02, 0.1);
@@ -368,6 +371,7 @@ void Renderer::Impl::prepare_uniforms(const DrawList& list, const Camera& camera
   uniforms.fade_center = focus.center().head<2>().cast<float>();
   uniforms.fade_range =
       Eigen::Vector2f(static_cast<float>(0.6 * radius), static_cast<float>(radius));
+  uniforms.ground_z = ground_z;
 }
 
 Image Renderer::Impl::draw(const DrawList& list, const Camera& camera) {
@@ -415,12 +419,11 @@ Image Renderer::Impl::draw(const DrawList& list, const Camera& camera) {
   glEnable(GL_BLEND);
   glEnable(GL_POLYGON_OFFSET_FILL);
   // Our own ground only where the environment has no floor (then the grid is drawn on that).
-  const bool ground_in_scene =
-      std::any_of(states.begin(), states.end(), [](const ItemState& s) { return s.on_ground; });
+  const bool ground_in_scene = list.ground.environment_floor;
   const bool floor = style.floor && !ground_in_scene;
   if (floor || (style.grid && !ground_in_scene)) {
     glPolygonOffset(-1.0f, -1.0f);
-    draw_ground_quad(focus, floor);
+    draw_ground_quad(focus, list.ground.z, floor);
   }
   glPolygonOffset(-2.0f, -4.0f);  // decals win against the surface they lie on
   glDepthMask(GL_TRUE);

@@ -10,6 +10,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "app/collision_matrix_note.h"
 #include "app/exit_codes.h"
 #include "app/gui/controls_section.h"
 #include "app/gui/node_section.h"
@@ -22,6 +23,7 @@
 #include "app/gui/view_section.h"
 #include "app/interrupt_handler.h"
 #include "app/live/event_record.h"
+#include "app/model_warnings.h"
 #include "app/pipeline.h"
 #include "planner/util/fork_gate.h"
 #include "render/figures/step_caption.h"
@@ -405,6 +407,8 @@ void PanelApp::handle_shortcuts() {
 
 int run_panel(const PanelOptions& options, std::ostream& out, std::ostream& err) {
   const Scenario scenario = load_scenario(options.scenario);
+  print_computed_collision_matrices(scenario.scene, err);
+  print_model_warnings(scenario.scene, err);
   std::vector<gui::ScriptAction> script;
   if (!options.script.empty()) script = gui::read_panel_script(options.script);
   std::unique_ptr<panel_detail::PanelApp> app;

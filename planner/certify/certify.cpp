@@ -40,10 +40,10 @@ class Checker {
 
  private:
   static constexpr const char* kOrder[] = {
-      "sequence",        "contact plane",     "contact polygon",    "contact normals",
-      "force points",    "equilibrium force", "equilibrium moment", "unilateral",
-      "friction",        "joint limits",      "torque limits",      "torque consistency",
-      "quaternion norm", "interpenetration"};
+      "solver status",      "sequence",        "contact plane",     "contact polygon",
+      "contact normals",    "force points",    "equilibrium force", "equilibrium moment",
+      "unilateral",         "friction",        "joint limits",      "torque limits",
+      "torque consistency", "quaternion norm", "interpenetration"};
 
   // Keeps the worst violation of each check, with its step and what it was.
   void note(const std::string& name, const std::string& unit, double violation, double tolerance,
@@ -62,6 +62,16 @@ class Checker {
   }
 
   std::string id(SurfaceRef r) const { return scene_.surfaces.id(system_, r); }
+
+  // A step is a posture only when its solve succeeded: the last iterate of a failed solve (kept
+  // by `posture --out` so that it can be looked at) is never accepted, whatever its residuals.
+  void check_status(int i, const PlanStep& step) {
+    const bool failed = step.status != PostureStatus::Solved || !plan_.failed.empty();
+    const std::string why =
+        "the last iterate of a failed solve (" +
+        (plan_.failed.empty() ? std::string(to_string(step.status)) : plan_.failed) + ")";
+    note("solver status", "", failed ? 1.0 : 0.0, 0.0, i, failed ? why : "");
+  }
 
   // --- adjacency and step semantics (docs/METHOD.md section 2)
   void check_sequence(int i, const PlanStep& step, const PlanStep* previous) {
@@ -258,6 +268,7 @@ class Checker {
 
   void check_step(int i, const PlanStep& step, const PlanStep* previous) {
     data_ = system_kinematics(system_, step.q);
+    check_status(i, step);
     check_sequence(i, step, previous);
     check_contacts(i, step);
     check_forces(i, step);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "planner/collision/srdf.h"
@@ -167,7 +168,7 @@ CollisionModel::CollisionModel(const System& system, const CollisionOptions& opt
   for (int e = 0; e < system.num_entities(); ++e) {
     add_entity_shapes(system, e, options, hulls);
   }
-  build_pairs(system, options);
+  build_pairs(system, options, hulls);
 }
 
 void CollisionModel::add_entity_shapes(const System& system, int e, const CollisionOptions& options,
@@ -199,11 +200,13 @@ void CollisionModel::add_entity_shapes(const System& system, int e, const Collis
   }
 }
 
-void CollisionModel::build_pairs(const System& system, const CollisionOptions& options) {
+void CollisionModel::build_pairs(const System& system, const CollisionOptions& options,
+                                 HullCache& cache) {
   const int n = static_cast<int>(links_.size());
   // Per link pair: 0 = not disabled, k > 0 = disabled, reason disabled_reasons[k - 1].
   std::vector<int> disabled(static_cast<size_t>(n) * n, 0);
   std::vector<std::string> disabled_reasons;
+  std::vector<bool> srdf_disables(system.num_entities(), false);  // some pair of its own links
   auto mark = [&](int a, int b, const std::string& reason) {
     if (a < 0 || b < 0) return;
     disabled_reasons.push_back(reason);
@@ -222,10 +225,14 @@ void CollisionModel::build_pairs(const System& system, const CollisionOptions& o
       const int l1 = model.find_link(d.link1), l2 = model.find_link(d.link2);
       num_unknown_srdf_links_ += (l1 < 0) + (l2 < 0);
       if (l1 >= 0 && l2 >= 0) {
+        srdf_disables[e] = true;
         mark(find_link(e, l1), find_link(e, l2),
              "SRDF" + (d.reason.empty() ? std::string() : " (" + d.reason + ")"));
       }
     }
+  }
+  if (options.computed_matrix) {
+    compute_matrices(system, *options.computed_matrix, srdf_disables, cache, mark);
   }
   auto resolve = [&](const LinkName& name) {
     const int e = system.find_entity(name.entity);
@@ -267,6 +274,7 @@ void CollisionModel::build_pairs(const System& system, const CollisionOptions& o
       if (reason.empty() && k > 0) {
         reason = disabled_reasons[k - 1];
         num_srdf_disabled_ += reason.starts_with("SRDF");
+        num_computed_disabled_ += reason.starts_with("computed");
       }
       if (!reason.empty()) {
         excluded_.push_back({la.entity, la.link, lb.entity, lb.link, reason});
@@ -275,6 +283,24 @@ void CollisionModel::build_pairs(const System& system, const CollisionOptions& o
       pair_of_[static_cast<size_t>(a) * n + b] = static_cast<int>(pairs_.size());
       pair_of_[static_cast<size_t>(b) * n + a] = static_cast<int>(pairs_.size());
       pairs_.push_back({a, b});
+    }
+  }
+}
+
+// Robots that ship no usable SRDF get the matrix MoveIt's setup assistant would have written; its
+// adjacent pairs are excluded by build_pairs' own rules anyway.
+void CollisionModel::compute_matrices(
+    const System& system, const CollisionMatrixOptions& options,
+    const std::vector<bool>& srdf_disables, HullCache& cache,
+    const std::function<void(int, int, const std::string&)>& mark) {
+  for (int e = 0; e < system.num_entities(); ++e) {
+    const Entity& entity = system.entity(e);
+    if (entity.kind == EntityKind::Environment || srdf_disables[e]) continue;
+    computed_matrices_.push_back({e, compute_collision_matrix(entity.model, options, &cache)});
+    for (const MatrixPair& p : computed_matrices_.back().matrix.pairs) {
+      if (p.reason == DisabledReason::Adjacent) continue;
+      mark(find_link(e, p.link_a), find_link(e, p.link_b),
+           std::string("computed (") + to_string(p.reason) + ")");
     }
   }
 }

@@ -6,14 +6,17 @@
 // (docs/DEPENDENCIES.md section 2), and the paper itself uses convex bounding volumes.
 #include <Eigen/Geometry>
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "planner/collision/collision_matrix.h"
 #include "planner/collision/convex_hull.h"
 #include "planner/collision/polytope_penetration.h"
 #include "planner/model/model_data.h"
@@ -87,7 +90,8 @@ struct CollisionPair {
 
 // A pair of links with collision geometry that is never checked, and why: "rigidly connected"
 // (only fixed joints between them), "adjacent bodies" (one movable joint between their rigid
-// bodies), "static" (neither moves), "SRDF (<reason>)", or "disabled" (CollisionOptions). Pairs
+// bodies), "static" (neither moves), "SRDF (<reason>)", "computed (<reason>)" (a computed
+// self-collision matrix, collision_matrix.h), or "disabled" (CollisionOptions). Pairs
 // joined directly by one joint (Model::adjacent) are left out, as docs/PLAN_FORMAT.md's
 // collision_pairs_ignored expects.
 struct ExcludedPair {
@@ -111,6 +115,11 @@ struct CollisionOptions {
   std::vector<std::pair<std::string, std::string>> srdf_files;
   // Further pairs that are never checked, possibly across entities. Unknown names throw.
   std::vector<std::pair<LinkName, LinkName>> disabled_pairs;
+  // When set, every entity but the environment whose SRDF files disable no pair of its own links
+  // (or which has none) gets its self-collision matrix computed with these options
+  // (collision_matrix.h), and the pairs it disables by sampling are never checked. Off here; the
+  // scene builder turns it on.
+  std::optional<CollisionMatrixOptions> computed_matrix;
   // Mesh hulls are simplified by 1 mm (qhull W, see ConvexHullOptions) and grown by their
   // max_outside_distance, so that every shape still contains its whole mesh. On TALOS this cuts
   // the hulls from 231 to 98 vertices on average (953 to 382 at most) for margins up to 1.1 mm.
@@ -129,7 +138,8 @@ class CollisionModel {
   //    body (this includes Model::adjacent),
   //  - pairs of links that never move (both in the environment, or on a fixed robot's base body):
   //    their distance is a constant,
-  //  - pairs disabled by an SRDF file or by options.disabled_pairs.
+  //  - pairs disabled by an SRDF file, by a computed self-collision matrix
+  //    (options.computed_matrix) or by options.disabled_pairs.
   // `cache` (optional) shares hulls with other models. Throws InputError on an unreadable mesh,
   // SRDF, or unknown entity/link name in options.disabled_pairs.
   CollisionModel(const System& system, const CollisionOptions& options = {},
@@ -149,11 +159,22 @@ class CollisionModel {
   // Pairs that only an SRDF file excludes.
   int num_srdf_disabled_pairs() const { return num_srdf_disabled_; }
   int num_unknown_srdf_links() const { return num_unknown_srdf_links_; }
+  // The self-collision matrices computed for options.computed_matrix, one per entity that got one,
+  // and the pairs that only they exclude.
+  struct ComputedMatrix {
+    int entity = -1;
+    CollisionMatrix matrix;
+  };
+  const std::vector<ComputedMatrix>& computed_matrices() const { return computed_matrices_; }
+  int num_computed_disabled_pairs() const { return num_computed_disabled_; }
 
  private:
   void add_entity_shapes(const System& system, int entity, const CollisionOptions& options,
                          HullCache& cache);
-  void build_pairs(const System& system, const CollisionOptions& options);
+  void build_pairs(const System& system, const CollisionOptions& options, HullCache& cache);
+  void compute_matrices(const System& system, const CollisionMatrixOptions& options,
+                        const std::vector<bool>& srdf_disables, HullCache& cache,
+                        const std::function<void(int, int, const std::string&)>& mark);
 
   std::vector<CollisionShape> shapes_;
   std::vector<CollisionLink> links_;
@@ -164,6 +185,8 @@ class CollisionModel {
   std::vector<int> pair_of_;     // links_.size()^2 -> index into pairs_, or -1
   int num_srdf_disabled_ = 0;
   int num_unknown_srdf_links_ = 0;
+  std::vector<ComputedMatrix> computed_matrices_;
+  int num_computed_disabled_ = 0;
 };
 
 // One thread's workspace: the world pose of every shape, and scratch for penetration depths and

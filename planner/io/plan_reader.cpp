@@ -31,6 +31,8 @@ class PlanReader {
            "expected \"stanceplan/plan@1\", found \"" + string(root, "format", "") + "\"");
     if (root.contains("partial"))
       out.plan.partial = string(member(root, "partial", ""), "reason", "partial");
+    if (root.contains("failed"))
+      out.plan.failed = string(member(root, "failed", ""), "reason", "failed");
     out.scenario = root.contains("scenario") && root["scenario"].is_string()
                        ? root["scenario"].get<std::string>()
                        : "";
@@ -120,6 +122,14 @@ class PlanReader {
     if (!v.is_string())
       fail(field.empty() ? key : field + "." + key, "expected a string, found " + found(v));
     return v.get<std::string>();
+  }
+
+  PostureStatus status(const std::string& name, const std::string& field) const {
+    for (PostureStatus s : {PostureStatus::Solved, PostureStatus::Infeasible,
+                            PostureStatus::IterationLimit, PostureStatus::NumericalFailure})
+      if (name == to_string(s)) return s;
+    fail(field, "expected solved, infeasible, iteration_limit or numerical_failure, found \"" +
+                    name + "\"");
   }
 
   double number(const json& v, const std::string& field) const {
@@ -345,6 +355,8 @@ class PlanReader {
       step.iterations = whole_number(solver, "iterations", 0, field + ".solver");
       step.time_ms = optional_number(solver, "time_ms", 0.0, field + ".solver");
       step.objective = optional_number(solver, "objective", 0.0, field + ".solver");
+      if (solver.contains("status"))
+        step.status = status(string(solver, "status", field + ".solver"), field + ".solver.status");
     }
     return step;
   }

@@ -150,6 +150,7 @@ std::string plan_to_json(const Plan& plan, const Scenario& s, const std::string&
   json out;
   out["format"] = "stanceplan/plan@1";
   if (!plan.partial.empty()) out["partial"] = {{"reaches_goal", false}, {"reason", plan.partial}};
+  if (!plan.failed.empty()) out["failed"] = {{"reason", plan.failed}};
   out["scenario"] = relative_to(s.file, base);
   out["gravity"] = vec(s.scene.gravity);
   out["friction"] = s.solver.friction;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <set>
 
+#include "planner/collision/srdf.h"
 #include "planner/util/input_error.h"
 #include "planner/util/text_file.h"
 
@@ -44,6 +45,7 @@ class ScenarioReader {
       fail(entities, "entities", "expected a non-empty list");
     for (size_t i = 0; i < entities.size(); ++i)
       s.spec.entities.push_back(read_entity(entities[i], "entities[" + std::to_string(i) + "]"));
+    for (const EntitySpec& e : s.spec.entities) srdf_files_.push_back(e.srdf);
     s.scene = build_scene(s.spec);
     s.initial_configuration = s.scene.system.neutral_configuration();
     for (size_t i = 0; i < entities.size(); ++i)
@@ -228,14 +230,18 @@ class ScenarioReader {
     return e;
   }
 
-  // A (partial) configuration of entity e written into q: base pose and named joints.
+  // A (partial) configuration of entity e written into q: an SRDF group state first, then the
+  // base pose and named joints, which override it.
   void read_configuration(const YAML::Node& node, const std::string& field, int e,
                           Eigen::VectorXd& q, const Scene& scene,
                           Eigen::VectorXd* stated = nullptr) const {
-    expect_keys(node, field, {"base_position", "base_orientation_wxyz", "base_rpy", "joints"});
+    expect_keys(node, field,
+                {"srdf_state", "base_position", "base_orientation_wxyz", "base_rpy", "joints"});
     const System& system = scene.system;
     const Entity& entity = system.entity(e);
     const int offset = system.offset(e);
+    if (node["srdf_state"])
+      read_srdf_state(node["srdf_state"], join(field, "srdf_state"), e, q, scene, stated);
     if (!entity.floating() &&
         (node["base_position"] || node["base_orientation_wxyz"] || node["base_rpy"]))
       fail(node, field,
@@ -274,6 +280,98 @@ class ScenarioReader {
       q[offset + entity.first_dof() + dof] = value;
       if (stated) (*stated)[offset + entity.first_dof() + dof] = 1.0;
     }
+  }
+
+  // srdf_state: NAME, every <group_state name="NAME"> of the entity's SRDF (several when the name
+  // recurs for other groups), in file order.
+  void read_srdf_state(const YAML::Node& node, const std::string& field, int e, Eigen::VectorXd& q,
+                       const Scene& scene, Eigen::VectorXd* stated) const {
+    const std::string name = text(node, field);
+    const Entity& entity = scene.system.entity(e);
+    const std::string& srdf = srdf_files_[e];
+    if (srdf.empty())
+      fail(node, field,
+           "entity \"" + entity.name + "\" has no srdf (give its srdf: FILE to use a group state)");
+    const SrdfStates file = load_srdf_states(srdf);
+    bool found = false;
+    std::vector<std::string> known;
+    for (const SrdfGroupState& state : file.states) {
+      if (std::find(known.begin(), known.end(), state.name) == known.end())
+        known.push_back(state.name);
+      if (state.name != name) continue;
+      found = true;
+      for (const SrdfJointValue& joint : state.joints)
+        apply_state_joint(node, field, srdf, state, joint, file, e, q, scene, stated);
+    }
+    if (!found) {
+      std::string list;
+      for (const std::string& k : known) {
+        list += list.empty() ? " " : ", ";
+        list += k;
+      }
+      fail(node, field,
+           "no group_state \"" + name + "\" in " + srdf +
+               " (it has:" + (known.empty() ? std::string(" none") : list) + ")");
+    }
+  }
+
+  // One joint of an SRDF group state written into q. A joint the URDF lacks is the floating base
+  // when the SRDF declares it a floating <virtual_joint> or it is Pinocchio's "root_joint" (as in
+  // the example-robot-data models): x y z qx qy qz qw, left out for an entity that is not floating
+  // (its base_pose places it).
+  void apply_state_joint(const YAML::Node& node, const std::string& field, const std::string& srdf,
+                         const SrdfGroupState& state, const SrdfJointValue& joint,
+                         const SrdfStates& file, int e, Eigen::VectorXd& q, const Scene& scene,
+                         Eigen::VectorXd* stated) const {
+    const Entity& entity = scene.system.entity(e);
+    const Model& model = *entity.model;
+    const int offset = scene.system.offset(e);
+    const std::string where = srdf + ":" + std::to_string(joint.line) + ": group_state \"" +
+                              state.name + "\": joint \"" + joint.joint + "\": ";
+    const int n = static_cast<int>(joint.values.size());
+    const int j = model.find_joint(joint.joint);
+    if (j < 0 && is_floating_base(joint.joint, file)) {
+      if (n != 7)
+        fail(node, field,
+             where + "expected 7 values for the floating base (x y z qx qy qz qw), found " +
+                 std::to_string(n));
+      if (!entity.floating()) return;
+      const Eigen::Quaterniond quat(joint.values[6], joint.values[3], joint.values[4],
+                                    joint.values[5]);
+      if (quat.norm() < 1e-9) fail(node, field, where + "a zero quaternion is no orientation");
+      q.segment<3>(offset) = Eigen::Vector3d(joint.values[0], joint.values[1], joint.values[2]);
+      const Eigen::Quaterniond unit = quat.normalized();
+      q.segment<4>(offset + 3) = Eigen::Vector4d(unit.w(), unit.x(), unit.y(), unit.z());
+      if (stated) stated->segment<7>(offset).setOnes();
+      return;
+    }
+    if (j < 0)
+      fail(node, field,
+           where + "model \"" + model.name + "\" (" + model.source_file + ") has no such joint");
+    const int dof = model.find_dof(joint.joint);
+    if (dof < 0)
+      fail(node, field, where + "not an independent joint of the model (fixed or mimic)");
+    if (n != 1)
+      fail(node, field,
+           where + "expected one value (the joint has one degree of freedom), found " +
+               std::to_string(n) +
+               " (multi-dof joints other than the floating base are not "
+               "supported)");
+    const double value = joint.values[0];
+    const Joint& model_joint = model.joints[j];
+    if (model_joint.has_position_limits &&
+        (value < model_joint.lower - 1e-9 || value > model_joint.upper + 1e-9))
+      fail(node, field,
+           where + std::to_string(value) + " is outside the joint's limits [" +
+               std::to_string(model_joint.lower) + ", " + std::to_string(model_joint.upper) + "]");
+    q[offset + entity.first_dof() + dof] = value;
+    if (stated) (*stated)[offset + entity.first_dof() + dof] = 1.0;
+  }
+
+  static bool is_floating_base(const std::string& joint, const SrdfStates& file) {
+    const auto& declared = file.floating_joints;
+    return joint == "root_joint" ||
+           std::find(declared.begin(), declared.end(), joint) != declared.end();
   }
 
   SurfaceRef surface(const YAML::Node& node, const std::string& field, const Scene& scene) const {
@@ -486,11 +584,11 @@ class ScenarioReader {
     expect_keys(node, "solver", {"max_iterations", "tolerance"});
     if (node["max_iterations"])
       s.solver.max_iterations = integer(node["max_iterations"], "solver.max_iterations", 1);
-    if (node["tolerance"]) s.solver.tolerance = positive(node["tolerance"], "solver.tolerance");
   }
 
   std::string path_;
   fs::path dir_;
+  std::vector<std::string> srdf_files_;  // per entity, "" when it has none
 };
 
 }  // namespace

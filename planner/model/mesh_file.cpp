@@ -48,17 +48,44 @@ bool material_color(const aiScene& scene, const aiMesh& mesh, Rgba* rgba) {
   return true;
 }
 
+// The file of the material's diffuse texture, resolved against the mesh file's folder (as ROS
+// tools do); empty when there is none or it is embedded in the file ("*0").
+std::string diffuse_texture(const aiScene& scene, const aiMesh& mesh, const std::string& folder) {
+  if (mesh.mMaterialIndex >= scene.mNumMaterials) return "";
+  aiString name;
+  if (scene.mMaterials[mesh.mMaterialIndex]->GetTexture(aiTextureType_DIFFUSE, 0, &name) !=
+      AI_SUCCESS)
+    return "";
+  std::string path = name.C_Str();
+  std::replace(path.begin(), path.end(), '\\', '/');  // files written on Windows
+  if (path.empty() || path[0] == '*') return "";
+  return path[0] == '/' ? path : folder + path;
+}
+
 // Appends one assimp mesh, placed by T_FN (node frame -> file frame) and then scaled.
 void append_mesh(const aiScene& scene, const aiMesh& mesh, const Eigen::Matrix4d& T_FN,
-                 const Eigen::Vector3d& scale, TriangleMesh* out, bool* any_material_color) {
+                 const Eigen::Vector3d& scale, const std::string& folder, TriangleMesh* out,
+                 bool* any_material_color) {
   Rgba rgba = {179, 179, 179, 255};
   *any_material_color |= material_color(scene, mesh, &rgba);
+  const bool vertex_colors = mesh.HasVertexColors(0);  // authored per vertex (PLY, COLLADA)
+  *any_material_color |= vertex_colors;
   const int first = static_cast<int>(out->vertices.size());
   for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
     const aiVector3D& v = mesh.mVertices[i];
     const Eigen::Vector4d p_F = T_FN * Eigen::Vector4d(v.x, v.y, v.z, 1.0);
     out->vertices.push_back(p_F.head<3>().cwiseProduct(scale));
-    out->colors.push_back(rgba);
+    if (vertex_colors) {
+      const aiColor4D& c = mesh.mColors[0][i];
+      out->colors.push_back({channel(c.r), channel(c.g), channel(c.b), channel(c.a)});
+    } else {
+      out->colors.push_back(rgba);
+    }
+  }
+  const std::string texture = diffuse_texture(scene, mesh, folder);
+  if (!texture.empty()) {
+    *any_material_color = true;
+    out->textured_parts.push_back({first, static_cast<int>(mesh.mNumVertices), texture});
   }
   // A negative determinant (mirror) reverses the orientation of every triangle.
   const bool mirrored = T_FN.topLeftCorner<3, 3>().determinant() * scale.prod() < 0.0;
@@ -74,13 +101,15 @@ void append_mesh(const aiScene& scene, const aiMesh& mesh, const Eigen::Matrix4d
 }
 
 void append_node(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& T_FP,
-                 const Eigen::Vector3d& scale, TriangleMesh* out, bool* any_material_color) {
+                 const Eigen::Vector3d& scale, const std::string& folder, TriangleMesh* out,
+                 bool* any_material_color) {
   const Eigen::Matrix4d T_FN = T_FP * to_eigen(node.mTransformation);
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-    append_mesh(scene, *scene.mMeshes[node.mMeshes[i]], T_FN, scale, out, any_material_color);
+    append_mesh(scene, *scene.mMeshes[node.mMeshes[i]], T_FN, scale, folder, out,
+                any_material_color);
   }
   for (unsigned i = 0; i < node.mNumChildren; ++i) {
-    append_node(scene, *node.mChildren[i], T_FN, scale, out, any_material_color);
+    append_node(scene, *node.mChildren[i], T_FN, scale, folder, out, any_material_color);
   }
 }
 
@@ -98,7 +127,9 @@ TriangleMesh load_mesh(const std::string& path, const Eigen::Vector3d& scale) {
   }
   TriangleMesh mesh;
   bool any_material_color = false;
-  append_node(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), scale, &mesh,
+  const size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  append_node(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), scale, folder, &mesh,
               &any_material_color);
   if (mesh.triangles.empty()) {
     throw InputError("mesh file \"" + path + "\" has no triangles");

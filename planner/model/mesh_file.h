@@ -17,9 +17,20 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;  // counter-clockwise seen from outside (outward normals)
   // Empty when no mesh of the file has a material colour (an STL file only gets assimp's
-  // placeholder material); otherwise one RGBA per vertex: the diffuse colour of its mesh's
-  // material (alpha times opacity), grey (179, 179, 179, 255) for a mesh without one.
+  // placeholder material); otherwise one RGBA per vertex: the file's own vertex colour when its
+  // mesh has one, else the diffuse colour of its mesh's material (alpha times opacity), grey
+  // (179, 179, 179, 255) for a mesh without one.
   std::vector<std::array<std::uint8_t, 4>> colors;
+  // The meshes whose material has a diffuse texture file: their vertices (`num_vertices` from
+  // `first_vertex`) and the texture's path as the file names it, resolved against the mesh file's
+  // folder. The planner decodes no image: the renderer multiplies their colours by the texture's
+  // mean colour (render/scene/mesh_file.h). Textures embedded in the file are not listed.
+  struct TexturedPart {
+    int first_vertex = 0;
+    int num_vertices = 0;
+    std::string texture_path;
+  };
+  std::vector<TexturedPart> textured_parts;
 };
 
 // Loads every triangle of the file: the scene graph is flattened (each node's transform applied to

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "planner/model/ignored_inertia.h"
 #include "planner/model/shape.h"
 
 namespace stanceplan {
@@ -60,6 +61,9 @@ class Model {
   double total_mass = 0.0;
   std::vector<double> subtree_mass;        // per link: mass of the link and everything below it
   std::vector<std::string> load_warnings;  // non-fatal faults found while loading (skipped parts)
+  // Links whose inertia tensor the loader set to zero (planner/model/ignored_inertia.h); the
+  // one-line summary is ignored_inertias_warning(source_file, ignored_inertias).
+  std::vector<IgnoredInertia> ignored_inertias;
 
   int num_dofs() const { return static_cast<int>(dof_joints.size()); }
   int num_links() const { return static_cast<int>(links.size()); }

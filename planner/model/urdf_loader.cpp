@@ -132,48 +132,48 @@ class Builder {
     for (const auto& child : link.child_links) add_link(*child, index, child->parent_joint.get());
   }
 
+  // Faults that change the statics (a negative or non-finite mass, a centre of mass that cannot
+  // be placed) are errors; faults of the tensor alone are recorded and the tensor set to zero
+  // (planner/model/ignored_inertia.h).
   void read_inertial(const std::string& link_name, const urdf::Inertial& inertial, Inertial* out) {
     const std::string where = "link \"" + link_name + "\": <inertial> ";
     if (!finite(inertial.origin)) fail(where + "<origin>: expected finite numbers");
+    if (!(inertial.mass >= 0.0))  // also NaN
+      fail(where + "mass: expected a number >= 0 (kg), found " + number(inertial.mass));
+    out->mass = inertial.mass;
+    out->p_LC = to_vector(inertial.origin.position);
     Eigen::Matrix3d I;
     I << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz,
         inertial.ixz, inertial.iyz, inertial.izz;
-    // A massless frame (mass 0, zero inertia: sensor and tool frames of TALOS and the Panda)
-    // carries nothing and is accepted; a zero mass with a non-zero inertia is not a body.
-    const bool massless_frame = inertial.mass == 0.0 && I.isZero(0.0);
-    if (!(inertial.mass > 0.0) && !massless_frame)  // also NaN
-      fail(where + "mass: expected a positive number (kg)" +
-           (inertial.mass == 0.0 ? " for a link with a non-zero inertia" : "") + ", found " +
-           number(inertial.mass));
-    out->mass = inertial.mass;
-    out->p_LC = to_vector(inertial.origin.position);
-    check_inertia(where, I);
+    const std::string fault = inertia_fault(inertial.mass, I);
+    if (!fault.empty()) {
+      model_.ignored_inertias.push_back({link_name, fault});
+      return;  // out->I_C stays zero
+    }
     const Eigen::Matrix3d R = to_isometry(inertial.origin).linear();
     out->I_C = R * I * R.transpose();
   }
 
-  // A rigid body's rotational inertia has principal moments a, b, c >= 0 with each at most the
-  // sum of the other two (a + b >= c: the moments are sums of second moments of the mass).
-  // Tolerances are relative to the trace. A negative moment is allowed only at rounding level.
-  // The triangle inequality gets 2 %: CAD exporters round the tensor, and TALOS's gripper motor
-  // links exceed it by 1.3 % (statics uses only the mass and centre of mass, so such a tensor is
-  // harmless); a larger excess means a wrong tensor (a mistyped or swapped entry).
-  void check_inertia(const std::string& where, const Eigen::Matrix3d& I) const {
+  // What no rigid body's rotational inertia can be ("" when the tensor is one): its principal
+  // moments a, b, c are >= 0 with each at most the sum of the other two (they are sums of second
+  // moments of the mass), and a massless link has none. A massless frame (mass 0, zero tensor:
+  // the sensor and tool frames of TALOS and the Panda) is fine. Tolerances are relative to the
+  // trace: a negative moment only at rounding level; the triangle inequality within 2 %, since
+  // CAD exporters round the tensor (TALOS's gripper motor links exceed it by 1.3 %).
+  static std::string inertia_fault(double mass, const Eigen::Matrix3d& I) {
     if (!I.allFinite())
-      fail(where + "<inertia>: expected finite numbers, found " +
-           numbers(Eigen::Map<const Eigen::VectorXd>(I.data(), 9)));
+      return "non-finite tensor " + numbers(Eigen::Map<const Eigen::VectorXd>(I.data(), 9));
+    if (mass == 0.0 && !I.isZero(0.0)) return "a non-zero tensor on a link of mass 0";
     const Eigen::Vector3d moments =
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly)
             .eigenvalues();  // ascending
     const double trace = std::abs(I.trace());
-    const std::string found = ", found principal moments " + numbers(moments);
     if (moments[0] < -1e-9 * trace)
-      fail(where + "<inertia>: expected a positive semi-definite matrix" + found);
+      return "not positive semi-definite: principal moments " + numbers(moments);
     if (moments[2] > moments[0] + moments[1] + 0.02 * trace)
-      fail(where +
-           "<inertia>: expected principal moments that satisfy the triangle inequality "
-           "(each at most the sum of the other two, within 2 % of the trace)" +
-           found);
+      return "triangle inequality broken: principal moments " + numbers(moments) + ", " +
+             number(moments[2]) + " > " + number(moments[0] + moments[1]);
+    return "";
   }
 
   void add_geometry(const std::string& link_name, const std::string& kind,
@@ -184,7 +184,9 @@ class Builder {
     if (!finite(origin)) fail(where + "<origin>: expected finite numbers");
     LinkGeometry g;
     g.T_LG = to_isometry(origin);
-    if (material &&
+    // A material with a <texture> is drawn by ROS tools in that texture, and urdfdom reports its
+    // missing <color> as opaque black: such a visual keeps the default colour instead.
+    if (material && material->texture_filename.empty() &&
         (material->color.r || material->color.g || material->color.b || material->color.a)) {
       g.has_color = true;
       g.rgba = Eigen::Vector4d(material->color.r, material->color.g, material->color.b,

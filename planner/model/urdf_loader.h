@@ -4,10 +4,11 @@
 // position/effort limits; inertials; visual and collision geometry (box, cylinder, sphere, mesh).
 // Floating and planar joints inside the tree are rejected. Throws InputError naming the file and
 // the fault (missing file, malformed XML, two roots, unknown mimic source, unresolvable mesh URI,
-// an element urdfdom could not parse, and physically meaningless values: a mass <= 0, an inertia
-// that is not positive semi-definite or breaks the triangle inequality, a zero axis, lower >
-// upper, a negative effort or velocity limit, a box/sphere/cylinder size <= 0, a non-finite
-// number), with the link or joint and what was expected and found.
+// an element urdfdom could not parse, and physically meaningless values the statics would use: a
+// mass < 0, a non-finite inertial origin, a zero axis, lower > upper, a negative effort or
+// velocity limit, a box/sphere/cylinder size <= 0, a non-finite number), with the link or joint
+// and what was expected and found. An inertia tensor no rigid body has is not an error: the
+// statics never use it, so it is set to zero and listed in Model::ignored_inertias.
 #include <string>
 
 #include "planner/model/model.h"

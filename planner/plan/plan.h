@@ -41,6 +41,11 @@ struct Plan {
   // steps lead from the initial stance to the stance closest to the goal, and this says why the
   // search stopped (e.g. "node_budget: no plan within 4 expanded nodes").
   std::string partial;
+  // Empty for a plan of solved postures. Otherwise the plan records a solve that failed
+  // (`posture --out` without a posture): its one step is the solver's last iterate, kept so that it
+  // can be rendered and looked at, and this says why (e.g. "no posture for the initial stance:
+  // infeasible (...)"). `certify` never accepts it.
+  std::string failed;
 };
 
 }  // namespace stanceplan

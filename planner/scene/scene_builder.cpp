@@ -30,6 +30,7 @@ Scene build_scene(const SceneSpec& spec, HullCache* cache) {
   for (int i = 0; i < scene.system.num_entities(); ++i)
     scene.surfaces.set(i, std::move(surfaces[i]));
   collision_options.disabled_pairs = spec.ignored_pairs;
+  collision_options.computed_matrix = spec.collision_matrix;
   if (spec.collision)
     scene.collision = std::make_shared<CollisionModel>(scene.system, collision_options, cache);
   return scene;

@@ -2,6 +2,7 @@
 // Builds a Scene from entity descriptions (URDF, surface file, SRDF, kind, base pose): what a
 // scenario file's `entities` section says. File faults throw InputError naming the file.
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,9 @@ struct SceneSpec {
   std::vector<std::pair<LinkName, LinkName>> ignored_pairs;
   Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   bool collision = true;
+  // Robots whose SRDF disables none of their pairs, or which have none, get a self-collision matrix
+  // computed with these options (CollisionOptions::computed_matrix); nullopt: none is computed.
+  std::optional<CollisionMatrixOptions> collision_matrix = CollisionMatrixOptions{};
 };
 
 Scene build_scene(const SceneSpec& spec, HullCache* cache = nullptr);

@@ -16,6 +16,9 @@ class ConstraintBlock {
   virtual ~ConstraintBlock() = default;
 
   const std::string& family() const { return family_; }
+  // The request contact this block constrains (contact_geometry, polygon), or -1: residual reports
+  // name it.
+  virtual int contact() const { return -1; }
   virtual int rows() const = 0;
   virtual void bounds(Eigen::Ref<Eigen::VectorXd> lower,
                       Eigen::Ref<Eigen::VectorXd> upper) const = 0;

@@ -18,12 +18,18 @@ const char* to_string(PostureStatus status) {
   return "?";
 }
 
+double residual_unit(const std::string& family) {
+  if (family == "quaternion") return 1.0;
+  if (family == "friction") return 0.1;
+  return 1e-3;
+}
+
 std::string PostureResult::worst_family() const {
   std::string worst;
   double value = -1.0;
   for (const auto& [family, residual] : residuals)
-    if (residual > value) {
-      value = residual;
+    if (residual / residual_unit(family) > value) {
+      value = residual / residual_unit(family);
       worst = family;
     }
   return worst;

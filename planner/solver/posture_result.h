@@ -13,6 +13,13 @@ namespace stanceplan {
 enum class PostureStatus { Solved, Infeasible, IterationLimit, NumericalFailure };
 const char* to_string(PostureStatus status);
 
+// The violation of a constraint family that is as significant as 1 (what worst_family() divides
+// by): 1 mm or 1 mrad for geometry (contact_geometry, polygon, collision, joint_limits), 0.1 % of
+// the weight for equilibrium (its rows are divided by m|g|), 0.1 % of the effort limit for
+// torque_limits, 0.1 N for a force coefficient below 0 (friction), and 1 for the quaternion norm:
+// the kinematics normalise phi, so a norm off 1 moves nothing until phi nears 0.
+double residual_unit(const std::string& family);
+
 // The force at one vertex of s1 of a loaded contact, applied BY s2's link ON s1's link.
 struct VertexForce {
   int contact = -1;  // index into PostureRequest::contacts
@@ -36,7 +43,11 @@ struct PostureResult {
   // "contact_geometry", "polygon", "equilibrium", "torque_limits", "collision", "quaternion",
   // "joint_limits", "friction".
   std::map<std::string, double> residuals;
-  std::string worst_family() const;  // the family with the largest residual
+  // For the families of one contact (contact_geometry, polygon): the request contact whose row is
+  // the family's worst.
+  std::map<std::string, int> residual_contacts;
+  // The family whose residual is largest in its own unit (residual_unit): the one to blame.
+  std::string worst_family() const;
   // "" when every number of the solution (q, forces, torques, placements) is finite; else the
   // first that is not, e.g. "q[12]" or "force 3".
   std::string non_finite_part() const;

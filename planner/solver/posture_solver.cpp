@@ -143,7 +143,10 @@ void record_residuals(PostureNlp& nlp, const Eigen::VectorXd& x, PostureResult& 
     double& worst = result.residuals[block->family()];
     for (int r = 0; r < block->rows(); ++r) {
       const int i = nlp.block_first_row(int(b)) + r;
-      worst = std::max({worst, gl[i] - g[i], g[i] - gu[i], 0.0});
+      const double violation = std::max({gl[i] - g[i], g[i] - gu[i], 0.0});
+      if (violation <= worst) continue;
+      worst = violation;
+      if (block->contact() >= 0) result.residual_contacts[block->family()] = block->contact();
     }
   }
   double& limits = result.residuals["joint_limits"];
@@ -312,24 +315,47 @@ std::string rounds_exhausted(bool collisions_grew, bool torques_grew, int rounds
          " after " + std::to_string(rounds) + " active-set rounds";
 }
 
-// Appends the worst family at the final iterate to a failed result's message, with its residual
+// The family to blame at the final iterate: among those beyond the constraint tolerance, the one
+// whose residual is largest in its own unit (residual_unit); when none is beyond it, the largest
+// in its unit overall. Second: whether it is beyond the tolerance.
+std::pair<std::string, bool> family_to_blame(const PostureResult& result, double tolerance) {
+  std::string blamed;
+  double ratio = -1.0;
+  for (const auto& [family, residual] : result.residuals)
+    if (residual > tolerance && residual / residual_unit(family) > ratio) {
+      ratio = residual / residual_unit(family);
+      blamed = family;
+    }
+  if (!blamed.empty()) return {blamed, true};
+  return {result.worst_family(), false};
+}
+
+// Appends the family to blame at the final iterate to a failed result's message, with its residual
 // against the constraint tolerance (a stop on the iteration limit may leave every constraint
-// within it: then the dual or complementarity test is what failed, and the message says so) and,
-// when it is collision (and `excluded` is given: collisions enforced), the pair nearest to
-// violating the margin.
-void name_worst_family(const Scene& scene, const std::vector<bool>* excluded,
-                       const SolverOptions& options, PostureResult& result) {
+// within it: then the dual or complementarity test is what failed, and the message says so), the
+// contact for a family of one contact, and, when it is collision (and `excluded` is given:
+// collisions enforced), the pair nearest to violating the margin.
+void name_worst_family(const Scene& scene, const PostureRequest& request,
+                       const std::vector<bool>* excluded, const SolverOptions& options,
+                       PostureResult& result) {
   if (result.residuals.empty()) return;
-  const std::string family = result.worst_family();
-  const double worst = result.residuals.at(family);
+  const auto [family, violated] = family_to_blame(result, options.tolerance);
   char figures[96];
-  std::snprintf(figures, sizeof(figures), " (%.1e, tolerance %.0e)", worst, options.tolerance);
-  if (worst <= options.tolerance) {
+  std::snprintf(figures, sizeof(figures), " (%.1e, tolerance %.0e)", result.residuals.at(family),
+                options.tolerance);
+  if (!violated) {
     result.message += "; every constraint family within tolerance at the final iterate, largest " +
                       family + figures + ": the optimality or complementarity test failed";
     return;
   }
-  result.message += "; worst violated family: " + family + figures;
+  result.message += "; worst violated family: " + family;
+  if (const auto it = result.residual_contacts.find(family);
+      it != result.residual_contacts.end() && it->second < int(request.contacts.size())) {
+    const Contact& c = request.contacts[size_t(it->second)].contact;
+    result.message += " at contact " + scene.surfaces.id(scene.system, c.s1) + " on " +
+                      scene.surfaces.id(scene.system, c.s2);
+  }
+  result.message += figures;
   if (excluded && family == "collision" && result.q.size() == scene.system.nq())
     result.message += closest_pair(scene, result.q, *excluded, options.collision_margin);
 }
@@ -340,6 +366,7 @@ RoundExcess record_round(PostureNlp& nlp, const Eigen::VectorXd& x, const Postur
                          const SolverOptions& options, PostureResult& result) {
   const System& system = nlp.state().scene.system;
   result.residuals.clear();
+  result.residual_contacts.clear();
   result.forces.clear();
   result.placements.clear();
   record_residuals(nlp, x, result);
@@ -352,13 +379,18 @@ RoundExcess record_round(PostureNlp& nlp, const Eigen::VectorXd& x, const Postur
     result.residuals["torque_limits"] = std::max(result.residuals["torque_limits"], excess.torque);
   excess.polygon_margins = polygon_margins(nlp.state());
   bool has_polygon_rows = false;  // every polygon row, the ones left out included
-  for (const Eigen::VectorXd& rows : excess.polygon_margins) {
+  int worst_polygon = -1;
+  for (size_t t = 0; t < excess.polygon_margins.size(); ++t) {
+    const Eigen::VectorXd& rows = excess.polygon_margins[t];
     if (rows.size() == 0) continue;
     has_polygon_rows = true;
+    if (-rows.minCoeff() > excess.polygon) worst_polygon = int(t);
     excess.polygon = std::max(excess.polygon, -rows.minCoeff());
   }
-  if (has_polygon_rows)
-    result.residuals["polygon"] = std::max(result.residuals["polygon"], excess.polygon);
+  if (has_polygon_rows && excess.polygon > result.residuals["polygon"]) {
+    result.residuals["polygon"] = excess.polygon;
+    if (worst_polygon >= 0) result.residual_contacts["polygon"] = worst_polygon;
+  }
   return excess;
 }
 
@@ -567,7 +599,7 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
   }
   if (result.q.size() == scene_.system.nq()) normalise_quaternions(scene_.system, result.q);
   if (result.status != PostureStatus::Solved)
-    name_worst_family(scene_, collisions ? &excluded : nullptr, options, result);
+    name_worst_family(scene_, request, collisions ? &excluded : nullptr, options, result);
   result.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -148,6 +148,11 @@ std::string serialize(const PostureResult& result) {
     w.text(family);
     w.pod(value);
   }
+  w.pod<uint64_t>(result.residual_contacts.size());
+  for (const auto& [family, contact] : result.residual_contacts) {
+    w.text(family);
+    w.pod<int32_t>(contact);
+  }
   w.text(result.blocking_family);
   return w.bytes;
 }
@@ -178,6 +183,11 @@ PostureResult deserialize_result(const std::string& bytes) {
   for (uint64_t i = 0; i < residuals; ++i) {
     const std::string family = r.text();
     result.residuals[family] = r.pod<double>();
+  }
+  const auto residual_contacts = r.pod<uint64_t>();
+  for (uint64_t i = 0; i < residual_contacts; ++i) {
+    const std::string family = r.text();
+    result.residual_contacts[family] = r.pod<int32_t>();
   }
   result.blocking_family = r.text();
   return result;

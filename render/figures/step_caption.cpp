@@ -65,6 +65,9 @@ std::string step_caption(const PlanView& plan, int step) {
         .append(std::to_string(last));
     caption.append("  \u00b7  ").append(action);
   }
+  // The last iterate of a failed solve (`posture --out` without a posture) says so first.
+  if (s.status != PostureStatus::Solved)
+    caption.insert(0, std::string("FAILED (") + to_string(s.status) + ", not a posture)  \u00b7  ");
   caption.append("\nstance: ").append(stance_summary(plan.scene, s.stance));
   return caption;
 }

@@ -111,8 +111,8 @@ void add_center_of_mass(const Eigen::Vector3d& c, const RenderStyle& style, Draw
   sphere.xray_opacity = 0.85f;  // the centre of mass is always inside the body: keep it clear
   list.items.push_back(sphere);
   // Its vertical projection: a thin plumb line and a disc on the ground.
-  const Eigen::Vector3d ground(c.x(), c.y(), style.ground_z);
-  const double height = c.z() - style.ground_z;
+  const Eigen::Vector3d ground(c.x(), c.y(), list.ground.z);
+  const double height = c.z() - list.ground.z;
   if (height <= 0.0) return;
   DrawItem line = sphere;
   T.translation() = 0.5 * (c + ground);
@@ -139,7 +139,7 @@ void add_support_polygon(const std::vector<Eigen::Vector2d>& points, const Rende
   std::vector<Eigen::Vector3f> vertices;
   for (const Eigen::Vector2d& p : hull)
     vertices.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()),
-                          static_cast<float>(style.ground_z + 0.5 * kDecalLift));
+                          static_cast<float>(list.ground.z + 0.5 * kDecalLift));
   const Eigen::Vector3f up = Eigen::Vector3f::UnitZ();
   list.items.push_back(
       transient_item(list, polygon(vertices, up), style.support_color, Layer::Translucent));
@@ -170,7 +170,7 @@ void add_contact_overlays(const Scene& scene, const SystemPose& pose,
       if (style.friction_cones && !pc.contact.bilateral)
         add_friction_cone(p, -polygon.normal, style, list);
       // A vertex on the ground, of a surface facing down onto it, supports the robot.
-      if (std::abs(p.z() - style.ground_z) < kGroundTolerance && polygon.normal.z() < -0.9)
+      if (std::abs(p.z() - list.ground.z) < kGroundTolerance && polygon.normal.z() < -0.9)
         ground_points.emplace_back(p.x(), p.y());
     }
   }

@@ -16,6 +16,7 @@ namespace stanceplan::render {
 // largest of `forces` force_max_length long.
 double force_scale(const RenderStyle& style, const std::vector<VertexForce>& forces);
 
+// The ground projection and the support polygon lie on list.ground (set it first: ground.h).
 void add_contact_overlays(const Scene& scene, const SystemPose& pose,
                           const std::vector<PlanContact>& contacts,
                           const std::vector<VertexForce>& forces, const RenderStyle& style,

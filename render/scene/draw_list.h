@@ -33,10 +33,18 @@ struct DrawItem {
   Eigen::AlignedBox3d world_bounds() const;  // the mesh's bounds, transformed
 };
 
+// Where the frame's ground is (ground.h decides it from the geometry).
+struct Ground {
+  double z = 0.0;
+  // An environment's floor is the ground: no ground plane is drawn, the grid lies on that floor.
+  bool environment_floor = false;
+};
+
 struct DrawList {
   std::vector<DrawItem> items;
   std::deque<MeshData> transient_meshes;  // a deque keeps addresses stable while growing
   bool has_environment = false;
+  Ground ground;
 
   // Stores a mesh made for this frame and returns its stable address.
   const MeshData* keep(MeshData mesh) {

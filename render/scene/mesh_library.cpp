@@ -21,16 +21,21 @@ const LoadedMesh* MeshLibrary::file(const std::string& path, const Eigen::Vector
   } catch (const std::exception& e) {
     fault = e.what();
   }
+  std::vector<std::string> messages;
+  if (!fault.empty()) messages.push_back(fault + " (visual skipped)");
+  if (loaded) messages.insert(messages.end(), loaded->warnings.begin(), loaded->warnings.end());
   std::lock_guard<std::mutex> lock(mutex_);
   auto [it, inserted] = meshes_.emplace(key, std::move(loaded));
-  if (inserted && !fault.empty()) {
-    const std::string message = fault + " (visual skipped)";
-    if (std::find(all_warnings_.begin(), all_warnings_.end(), message) == all_warnings_.end()) {
-      all_warnings_.push_back(message);
-      new_warnings_.push_back(message);
-    }
+  if (inserted) {
+    for (const std::string& message : messages) record(message);
   }
   return it->second.get();
+}
+
+void MeshLibrary::record(const std::string& message) {
+  if (std::find(all_warnings_.begin(), all_warnings_.end(), message) != all_warnings_.end()) return;
+  all_warnings_.push_back(message);
+  new_warnings_.push_back(message);
 }
 
 const MeshData& MeshLibrary::primitive(ShapeType type) {
@@ -57,9 +62,7 @@ const MeshData& MeshLibrary::cone() {
 
 void MeshLibrary::warn(const std::string& message) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (std::find(all_warnings_.begin(), all_warnings_.end(), message) != all_warnings_.end()) return;
-  all_warnings_.push_back(message);
-  new_warnings_.push_back(message);
+  record(message);
 }
 
 std::vector<std::string> MeshLibrary::take_warnings() {

@@ -18,7 +18,8 @@ namespace stanceplan::render {
 class MeshLibrary {
  public:
   // nullptr when the file cannot be loaded: the fault is recorded as a warning (once per file)
-  // and the caller skips the geometry, so that a model with a broken mesh still renders.
+  // and the caller skips the geometry, so that a model with a broken mesh still renders. A loaded
+  // mesh's own warnings (an unreadable texture) are recorded too.
   const LoadedMesh* file(const std::string& path, const Eigen::Vector3d& scale);
   // The unit mesh of a primitive shape (Box, Cylinder, Sphere); see mesh_data.h for sizes.
   static const MeshData& primitive(ShapeType type);
@@ -30,6 +31,8 @@ class MeshLibrary {
   std::vector<std::string> take_warnings();
 
  private:
+  void record(const std::string& message);  // with mutex_ held; drops repeats
+
   using Key = std::tuple<std::string, double, double, double>;
   std::mutex mutex_;
   std::map<Key, std::unique_ptr<LoadedMesh>> meshes_;  // null entry: failed to load

@@ -5,6 +5,7 @@
 
 #include "planner/model/kinematics.h"
 #include "render/scene/contact_overlays.h"
+#include "render/scene/ground.h"
 
 namespace stanceplan::render {
 namespace {
@@ -44,8 +45,9 @@ bool add_geometry(const LinkGeometry& geometry, const Eigen::Isometry3d& T_WL,
       if (loaded == nullptr) return false;
       item->mesh = &loaded->mesh;
       item->T_WM = T_WG.matrix().cast<float>();
-      // The URDF's material wins; otherwise the file's own materials (DAE, OBJ) give the colours.
-      item->vertex_colors = !geometry.has_color && loaded->has_material_colors;
+      // The file's own materials (DAE, OBJ, ...) win over the URDF's <material>, which colours
+      // only files without any (STL), as rviz does: a published model looks as its author drew it.
+      item->vertex_colors = loaded->has_material_colors;
       return true;
     }
   }
@@ -81,7 +83,9 @@ void add_entity_geometry(const Scene& scene, const SystemPose& pose, const Rende
         DrawItem item;
         const std::string where = entity.name + "/" + link.name;
         if (!add_geometry(geometry, pose.T_WL(e, l), where, style, meshes, &item)) continue;
-        item.layer = item.color.a < 0.99f ? Layer::Translucent : Layer::Solid;
+        // A mesh in its own colours is opaque whatever the URDF's alpha says.
+        item.layer =
+            item.color.a < 0.99f && !item.vertex_colors ? Layer::Translucent : Layer::Solid;
         item.frames_view = !environment;
         item.environment = environment;
         list.items.push_back(item);
@@ -97,6 +101,7 @@ DrawList assemble_frame(const Scene& scene, const Eigen::VectorXd& q,
   const SystemPose pose(scene.system, q);
   DrawList list;
   add_entity_geometry(scene, pose, style, meshes, list);
+  list.ground = find_ground(list);
   add_contact_overlays(scene, pose, contacts, forces, style, list);
   return list;
 }

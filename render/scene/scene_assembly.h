@@ -31,7 +31,8 @@ class SystemPose {
 void add_entity_geometry(const Scene& scene, const SystemPose& pose, const RenderStyle& style,
                          MeshLibrary& meshes, DrawList& list);
 
-// Everything a frame draws (geometry and contact overlays, see contact_overlays.h), without GL.
+// Everything a frame draws (geometry, its ground (ground.h) and contact overlays, see
+// contact_overlays.h), without GL.
 DrawList assemble_frame(const Scene& scene, const Eigen::VectorXd& q,
                         const std::vector<PlanContact>& contacts,
                         const std::vector<VertexForce>& forces, const RenderStyle& style,

@@ -39,6 +39,7 @@ std::string overlapping_soles(const std::string& name, const std::string& collis
 
 void expect_posture_names_the_collision(const std::string& scenario) {
   const std::string out = (test::temp_dir("pinned") / "p.json").string();
+  std::filesystem::remove(out);
   const test::CliResult r = test::run_cli({"posture", scenario, "--out", out});
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_THAT(r.err, HasSubstr("infeasible (collision: robot/l_foot (pinned by contact robot/l_sole"
@@ -46,7 +47,14 @@ void expect_posture_names_the_collision(const std::string& scenario) {
                                " env/floor) are "));
   EXPECT_THAT(r.err, HasSubstr(" m into each other"));
   EXPECT_THAT(r.err, HasSubstr("\n  collision          worst violation 0.04"));
-  EXPECT_FALSE(std::filesystem::exists(out));
+  // The guess is written to be looked at, marked failed: certify refuses it and says why.
+  ASSERT_TRUE(std::filesystem::exists(out));
+  const test::CliResult certified = test::run_cli({"certify", out});
+  EXPECT_EQ(certified.code, 2);
+  EXPECT_THAT(certified.err,
+              HasSubstr("certification failed: solver status at step 0: the last iterate of a "
+                        "failed solve (no posture for the initial stance: infeasible (collision: "
+                        "robot/l_foot (pinned by contact robot/l_sole"));
 }
 
 TEST(PinnedCollision, PostureNamesBothLinksWithMarginZero) {

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,9 +13,21 @@
 #include "planner/model/kinematics.h"
 #include "planner/model/urdf_loader.h"
 #include "render/render_style.h"
+#include "render/scene/camera.h"
 #include "tests/support/paths.h"
 
 namespace stanceplan::test {
+
+// Looking along -x at the origin from 5 m, z up, 30 degrees of view: world y runs leftwards in the
+// image.
+inline render::Camera camera_on_x_axis() {
+  render::Camera camera;
+  camera.eye = Eigen::Vector3d(5.0, 0.0, 0.0);
+  camera.target = Eigen::Vector3d::Zero();
+  camera.up = Eigen::Vector3d::UnitZ();
+  camera.fov_y_deg = 30.0;
+  return camera;
+}
 
 struct TestBox {
   Eigen::Vector3d centre;
@@ -46,6 +59,66 @@ inline Scene boxes_scene(const std::vector<TestBox>& boxes) {
   Scene scene;
   scene.system.add(entity);
   scene.surfaces = SurfaceSet(1);
+  return scene;
+}
+
+inline LinkGeometry box_geometry(const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
+                                 const Eigen::Vector4d& rgba) {
+  LinkGeometry g;
+  g.shape.type = ShapeType::Box;
+  g.shape.size = size;
+  g.T_LG.translation() = centre;
+  g.has_color = true;
+  g.rgba = rgba;
+  return g;
+}
+
+// A mesh file's visual; `rgba` is the URDF's <material> colour when given.
+inline LinkGeometry mesh_geometry(const std::string& path,
+                                  const std::optional<Eigen::Vector4d>& rgba = std::nullopt) {
+  LinkGeometry g;
+  g.shape.type = ShapeType::Mesh;
+  g.shape.mesh_uri = path;
+  g.shape.mesh_path = path;
+  g.has_color = rgba.has_value();
+  if (rgba) g.rgba = *rgba;
+  return g;
+}
+
+// Adds a joint-less entity of `kind` whose only link carries the geometries (no configuration);
+// call finish_scene() once every entity is in.
+inline void add_fixed_entity(Scene& scene, const std::string& name, EntityKind kind,
+                             const std::vector<LinkGeometry>& geometries) {
+  Model model;
+  model.name = name;
+  Link link;
+  link.name = "base";
+  link.visuals = geometries;
+  model.links.push_back(link);
+  model.finalize();
+  Entity entity;
+  entity.name = name;
+  entity.kind = kind;
+  entity.model = std::make_shared<const Model>(std::move(model));
+  scene.system.add(entity);
+}
+inline void finish_scene(Scene& scene) {
+  scene.surfaces = SurfaceSet(scene.system.num_entities());
+}
+
+// An environment whose only geometry is a horizontal slab `size` wide (x, y), 0.1 m thick, its
+// top at `top_z`, in `rgba`; and a subject (a fixed robot): a box 0.3 x 0.3 x 0.6 m standing on
+// the slab at the origin, in `subject_rgba`.
+inline Scene slab_scene(const Eigen::Vector2d& size, double top_z, const Eigen::Vector4d& rgba,
+                        const Eigen::Vector4d& subject_rgba) {
+  Scene scene;
+  add_fixed_entity(scene, "env", EntityKind::Environment,
+                   {box_geometry(Eigen::Vector3d(0, 0, top_z - 0.05),
+                                 Eigen::Vector3d(size.x(), size.y(), 0.1), rgba)});
+  add_fixed_entity(scene, "robot", EntityKind::FixedRobot,
+                   {box_geometry(Eigen::Vector3d(0, 0, top_z + 0.3), Eigen::Vector3d(0.3, 0.3, 0.6),
+                                 subject_rgba)});
+  finish_scene(scene);
   return scene;
 }
 

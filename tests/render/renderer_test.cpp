@@ -15,16 +15,6 @@ namespace {
 const Eigen::Vector4d kRed(1.0, 0.0, 0.0, 1.0);
 const Eigen::Vector4d kBlue(0.0, 0.0, 1.0, 1.0);
 
-// Looking along -x at the origin from 5 m, z up: world y runs leftwards in the image.
-Camera camera_on_x_axis() {
-  Camera camera;
-  camera.eye = Eigen::Vector3d(5.0, 0.0, 0.0);
-  camera.target = Eigen::Vector3d::Zero();
-  camera.up = Eigen::Vector3d::UnitZ();
-  camera.fov_y_deg = 30.0;
-  return camera;
-}
-
 bool is_rgb(const Image& image, int x, int y, int r, int g, int b) {
   const std::uint8_t* p = image.pixel(x, y);
   return p[0] == r && p[1] == g && p[2] == b;
@@ -40,7 +30,7 @@ int count_rgb(const Image& image, int r, int g, int b) {
 TEST(Renderer, UnitBoxCoversTheExpectedPixelsAndNothingElse) {
   const Scene scene = test::boxes_scene({{Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), kRed}});
   Renderer renderer(200, 200, test::plain_style());
-  const Image image = renderer.render(scene, Eigen::VectorXd(0), {}, {}, camera_on_x_axis());
+  const Image image = renderer.render(scene, Eigen::VectorXd(0), {}, {}, test::camera_on_x_axis());
   ASSERT_EQ(image.width, 200);
   ASSERT_EQ(image.height, 200);
   ASSERT_EQ(image.rgba.size(), 200u * 200u * 4u);
@@ -63,7 +53,7 @@ TEST(Renderer, ImageRowsAreTopDown) {
   const Scene scene =
       test::boxes_scene({{Eigen::Vector3d(0, 0, 0.8), Eigen::Vector3d(0.4, 0.4, 0.4), kRed}});
   Renderer renderer(120, 120, test::plain_style());
-  const Image image = renderer.render(scene, Eigen::VectorXd(0), {}, {}, camera_on_x_axis());
+  const Image image = renderer.render(scene, Eigen::VectorXd(0), {}, {}, test::camera_on_x_axis());
   EXPECT_TRUE(is_rgb(image, 60, 20, 255, 0, 0));
   EXPECT_TRUE(is_rgb(image, 60, 100, 255, 255, 255));
 }
@@ -74,8 +64,8 @@ TEST(Renderer, NearBoxHidesFarBoxWhateverTheDrawingOrder) {
   Renderer renderer(200, 200, test::plain_style());
   for (const auto& boxes :
        {std::vector<test::TestBox>{near, far}, std::vector<test::TestBox>{far, near}}) {
-    const Image image =
-        renderer.render(test::boxes_scene(boxes), Eigen::VectorXd(0), {}, {}, camera_on_x_axis());
+    const Image image = renderer.render(test::boxes_scene(boxes), Eigen::VectorXd(0), {}, {},
+                                        test::camera_on_x_axis());
     // Near box: +-25 px around the centre; far box: +-62 px.
     EXPECT_TRUE(is_rgb(image, 100, 100, 255, 0, 0));
     EXPECT_TRUE(is_rgb(image, 100 + 20, 100 + 20, 255, 0, 0));
@@ -189,7 +179,7 @@ TEST(Renderer, DaeMeshesKeepTheirMaterialColours) {
 TEST(Renderer, RejectsAConfigurationOfTheWrongSize) {
   const Scene scene = test::boxes_scene({{Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), kRed}});
   Renderer renderer(64, 64, test::plain_style());
-  EXPECT_THROW(renderer.render(scene, Eigen::VectorXd::Zero(3), {}, {}, camera_on_x_axis()),
+  EXPECT_THROW(renderer.render(scene, Eigen::VectorXd::Zero(3), {}, {}, test::camera_on_x_axis()),
                std::invalid_argument);
 }
 

@@ -31,6 +31,7 @@ class QuaternionNormBlock : public ConstraintBlock {
 // branch inequality). A free placement (case 1) keeps only the first three rows and the branch.
 class ContactGeometryBlock : public ConstraintBlock {
  public:
+  int contact() const override { return task_; }
   ContactGeometryBlock(const NlpState& state, int task);
   int rows() const override { return fixed_ ? 8 : 4; }
   void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
@@ -52,6 +53,7 @@ class ContactGeometryBlock : public ConstraintBlock {
 // rows that enter (PostureSolver's polygon active set); nullptr: every row.
 class PolygonBlock : public ConstraintBlock {
  public:
+  int contact() const override { return task_; }
   PolygonBlock(const NlpState& state, int task, const std::vector<int>* only = nullptr);
   int rows() const override { return static_cast<int>(rows_.size()); }
   void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;

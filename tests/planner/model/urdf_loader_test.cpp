@@ -7,6 +7,7 @@
 
 #include "planner/model/urdf_loader.h"
 #include "planner/util/input_error.h"
+#include "tests/support/input_errors.h"
 #include "tests/support/paths.h"
 #include "tests/support/test_models.h"
 
@@ -22,16 +23,7 @@ UrdfOptions with_package(const std::string& dir) {
   return options;
 }
 
-// The message of the InputError that f throws ("" when it throws none).
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
 
 TEST(UrdfLoader, TalosHas32ActuatedJointsAndItsDocumentedMass) {
   STANCEPLAN_REQUIRE_SHARED("robots/talos");
@@ -40,6 +32,7 @@ TEST(UrdfLoader, TalosHas32ActuatedJointsAndItsDocumentedMass) {
   EXPECT_EQ(talos.num_dofs(), 32);
   EXPECT_NEAR(talos.total_mass, 90.2722, 1e-3);
   EXPECT_TRUE(talos.load_warnings.empty()) << talos.load_warnings.front();
+  EXPECT_TRUE(talos.ignored_inertias.empty()) << talos.ignored_inertias.front().link;
   int meshes = 0, mirrored = 0;
   for (const Link& link : talos.links)
     for (const auto* list : {&link.collisions, &link.visuals})
@@ -160,6 +153,39 @@ TEST_F(BadUrdf, FloatingJointInsideTheTreeIsRejected) {
     <joint name="free" type="floating"><parent link="a"/><child link="b"/></joint></robot>)");
   EXPECT_THAT(error_of([&] { load_urdf(path); }),
               HasSubstr(path + ": joint \"free\": type floating is not supported"));
+}
+
+// A published model's inertia tensors may be ones no rigid body has (CAD exports); the statics
+// use the mass and centre of mass only, so the model loads, the tensors are set to zero and listed.
+TEST(UrdfLoaderInertia, TensorsNoBodyHasAreIgnoredWithTheLinkAndTheFault) {
+  const std::string path = test::source_path("tests/data/inertia_faults/cad_arm.urdf");
+  const Model model = load_urdf(path);
+  EXPECT_NEAR(model.total_mass, 4.25, 1e-12);  // every mass counts
+  ASSERT_EQ(model.ignored_inertias.size(), 2u);
+  EXPECT_EQ(model.ignored_inertias[0].link, "upper");
+  EXPECT_EQ(model.ignored_inertias[0].fault,
+            "triangle inequality broken: principal moments 0.125 0.125 0.5, 0.5 > 0.25");
+  EXPECT_EQ(model.ignored_inertias[1].link, "forearm");
+  EXPECT_EQ(model.ignored_inertias[1].fault,
+            "not positive semi-definite: principal moments -0.03125 0.0625 0.0625");
+  const Link& upper = model.links[model.find_link("upper")];
+  EXPECT_TRUE(upper.inertial.I_C.isZero(0.0));
+  EXPECT_EQ(upper.inertial.p_LC, Eigen::Vector3d(0, 0, 0.15));
+  EXPECT_FALSE(model.links[model.find_link("base")].inertial.I_C.isZero(0.0));
+  EXPECT_TRUE(model.load_warnings.empty());
+  EXPECT_EQ(ignored_inertias_warning(model.source_file, model.ignored_inertias),
+            path +
+                ": inertia of 2 links ignored (not used by the statics): upper (triangle "
+                "inequality broken: principal moments 0.125 0.125 0.5, 0.5 > 0.25), forearm (not "
+                "positive semi-definite: principal moments -0.03125 0.0625 0.0625)");
+}
+
+TEST_F(BadUrdf, NegativeMassIsRefusedWithFileLinkAndValue) {
+  const std::string path = write("negative_mass.urdf", R"(<robot name="r"><link name="body">
+    <inertial><mass value="-0.5"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/>
+    </inertial></link></robot>)");
+  EXPECT_EQ(error_of([&] { load_urdf(path); }),
+            path + ": link \"body\": <inertial> mass: expected a number >= 0 (kg), found -0.5");
 }
 
 TEST(UrdfLoaderString, BranchingModelHasExpectedStructure) {
