@@ -44,7 +44,9 @@ void add_inspect(CLI::App& cli, InspectOptions& options) {
                                      "Describe a URDF model: kind, joints, limits, mass, "
                                      "links, contact surfaces, collision geometry");
   cmd->add_option("model", options.urdf, "URDF file")->required();
-  cmd->add_option("--surfaces", options.surfaces, "surface file (stanceplan/surfaces@1 YAML)");
+  cmd->add_option("--surfaces", options.surfaces,
+                  "surface file (stanceplan/surfaces@1 YAML), or auto: extracted from the "
+                  "collision geometry");
   cmd->add_option("--srdf", options.srdf, "SRDF file with disabled collision pairs");
   cmd->add_option("--package-path", options.package_paths,
                   "directory searched for package:// URIs (repeatable; ROS_PACKAGE_PATH is "

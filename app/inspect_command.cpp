@@ -7,6 +7,7 @@
 
 #include "planner/collision/collision_matrix.h"
 #include "planner/collision/collision_model.h"
+#include "planner/contact/affordances.h"
 #include "planner/contact/surface_file.h"
 #include "planner/model/entity.h"
 #include "planner/model/urdf_loader.h"
@@ -142,7 +143,21 @@ void print_text(const json& d, std::ostream& out) {
   for (const json& s : d["surfaces"])
     out << "  " << std::left << std::setw(16) << s["name"].get<std::string>() << " on "
         << std::setw(20) << s["link"].get<std::string>() << std::right << s["vertices"].size()
-        << " vertices, " << std::setprecision(4) << s["area"].get<double>() << " m^2\n";
+        << " vertices, " << std::setprecision(4) << s["area"].get<double>() << " m^2"
+        << (s.contains("class") ? ", " + s["class"].get<std::string>() : "") << "\n";
+  // Extracted surfaces (--surfaces auto) are new to the reader: their normal and vertices too.
+  for (const json& s : d["surfaces"]) {
+    if (!s.contains("class")) continue;
+    auto point = [&](const json& v) {
+      out << " [" << v[0].get<double>() << ", " << v[1].get<double>() << ", " << v[2].get<double>()
+          << "]";
+    };
+    out << "  " << s["name"].get<std::string>() << ": normal" << std::setprecision(4);
+    point(s["normal"]);
+    out << ", vertices (link frame, m)";
+    for (const json& v : s["vertices"]) point(v);
+    out << "\n";
+  }
   for (const json& w : d["warnings"]) out << "warning: " << w.get<std::string>() << "\n";
 }
 
@@ -223,10 +238,18 @@ int run_inspect(const InspectOptions& options, std::ostream& out, std::ostream& 
     for (const std::string& w : model->load_warnings) err << "warning: " << w << "\n";
     return inspect_collision_matrix(options, model, out);
   }
+  // --surfaces auto: the surfaces `surfaces: auto` would give it in a scenario, root at the origin.
   std::vector<Surface> surfaces;
-  if (!options.surfaces.empty()) surfaces = load_surface_file(options.surfaces, *model);
+  std::vector<Affordance> extracted;
+  if (options.surfaces == "auto")
+    for (Affordance& a : extracted = extract_affordances(*model, Eigen::Isometry3d::Identity()))
+      surfaces.push_back(a.surface);
+  else if (!options.surfaces.empty())
+    surfaces = load_surface_file(options.surfaces, *model);
   const EntityKind kind = decide_kind(options, *model);
   json description = describe(*model, kind, surfaces);
+  for (size_t i = 0; i < extracted.size(); ++i)
+    description["surfaces"][i]["class"] = to_string(extracted[i].kind);
   description["collision"] = collision_summary(model, kind, options.srdf);
   if (options.json)
     out << description.dump(2) << "\n";

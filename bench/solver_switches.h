@@ -7,6 +7,7 @@
 //   STANCEPLAN_TORQUE_ACTIVE=f                SolverOptions::torque_active_fraction
 //   STANCEPLAN_POLYGON_ACTIVE=d               SolverOptions::polygon_active_distance ("inf": all)
 //   STANCEPLAN_NO_BALANCE=1                   even shares instead of balanced starting forces
+//   STANCEPLAN_STALL_AFTER=n                  SolverOptions::stall.after (0: no stall rule)
 //   STANCEPLAN_IPOPT="name=value,..."         Ipopt options passed through
 #include <algorithm>
 #include <cstdlib>
@@ -30,6 +31,7 @@ inline void apply_solver_switches(SolverOptions& o) {
   if (const char* d = std::getenv("STANCEPLAN_POLYGON_ACTIVE"))
     o.polygon_active_distance = std::atof(d);
   if (std::getenv("STANCEPLAN_NO_BALANCE")) o.balance_starting_forces = false;
+  if (const char* n = std::getenv("STANCEPLAN_STALL_AFTER")) o.stall.after = std::atoi(n);
   if (const char* env = std::getenv("STANCEPLAN_IPOPT")) {
     const std::string text = env;
     size_t start = 0;

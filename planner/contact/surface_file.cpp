@@ -2,10 +2,14 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
+#include <sstream>
 
+#include "planner/contact/link_faces.h"
 #include "planner/util/input_error.h"
 #include "planner/util/text_file.h"
 
@@ -13,6 +17,14 @@ namespace stanceplan {
 namespace {
 
 const char* kFormat = "stanceplan/surfaces@1";
+
+// "+x" -> 0, "-x" -> 1, ..., "-z" -> 5 (axis = index / 2, minus when odd); -1 for anything else.
+int axis_index(const std::string& name) {
+  static const std::string kAxes[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  for (int i = 0; i < 6; ++i)
+    if (name == kAxes[i]) return i;
+  return -1;
+}
 
 class SurfaceFileReader {
  public:
@@ -27,6 +39,7 @@ class SurfaceFileReader {
                        ": not valid YAML: " + e.msg);
     }
     if (!root.IsMap()) fail(root, "", "expected a mapping with \"format\" and \"surfaces\"");
+    expect_keys(root, "", {"format", "surfaces"}, "");
     const YAML::Node format = root["format"];
     if (!format || !format.IsScalar() || format.as<std::string>() != kFormat)
       fail(format ? format : root, "format",
@@ -78,8 +91,49 @@ class SurfaceFileReader {
     return value;
   }
 
+  // Every key of `node` must be one of `keys`; a key that belongs to another kind of surface is
+  // named as such. Same message as scenario files (planner/io/scenario.cpp).
+  void expect_keys(const YAML::Node& node, const std::string& field,
+                   const std::vector<std::string>& keys, const std::string& kind) const {
+    static const std::set<std::string> kAnyKind = {
+        "name", "link", "normal", "vertices", "x_axis", "box_face", "box_index", "inset", "face"};
+    for (const auto& item : node) {
+      const std::string key = item.first.IsScalar() ? item.first.Scalar() : "?";
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+      std::string known;
+      for (const std::string& k : keys) known += (known.empty() ? "" : ", ") + k;
+      const std::string what = kAnyKind.count(key) && !kind.empty()
+                                   ? "not a field of a " + kind + " surface"
+                                   : "unknown field";
+      fail(item.first, field.empty() ? key : field + "." + key,
+           what + " (expected one of: " + known + ")");
+    }
+  }
+
+  // Which of vertices, box_face and face the surface is given by ("" when none).
+  std::string kind_of(const YAML::Node& node, const std::string& index_label) const {
+    std::string kind;
+    for (const char* k : {"vertices", "box_face", "face"}) {
+      if (!node[k]) continue;
+      if (!kind.empty())
+        fail(node, index_label,
+             "give one of vertices, box_face or face, found " + kind + " and " + k);
+      kind = k;
+    }
+    return kind;
+  }
+
   Surface read_surface(const YAML::Node& node, const std::string& index_label) {
     if (!node.IsMap()) fail(node, index_label, "expected a mapping");
+    const std::string kind = kind_of(node, index_label);
+    if (kind == "box_face")
+      expect_keys(node, index_label, {"name", "link", "box_face", "box_index", "inset", "x_axis"},
+                  kind);
+    else if (kind == "face")
+      expect_keys(node, index_label, {"name", "link", "face", "inset", "x_axis"}, kind);
+    else
+      expect_keys(node, index_label, {"name", "link", "normal", "vertices", "x_axis"},
+                  kind.empty() ? "" : "vertices");
     if (!node["name"] || !node["name"].IsScalar()) fail(node, index_label, "name: missing");
     const std::string name = node["name"].as<std::string>();
     const std::string where = "surface \"" + name + "\"";
@@ -89,9 +143,15 @@ class SurfaceFileReader {
     if (link < 0)
       fail(node["link"], where,
            "link \"" + link_name + "\" is not in model \"" + model_.name + "\"");
-    if (node["box_face"]) return read_box_face(node, where, name, link);
+    if (kind == "box_face") return read_box_face(node, where, name, link);
+    if (kind == "face") return read_link_face(node, where, name, link);
+    return read_polygon(node, where, name, link, link_name);
+  }
+
+  Surface read_polygon(const YAML::Node& node, const std::string& where, const std::string& name,
+                       int link, const std::string& link_name) {
     if (!node["vertices"] || !node["vertices"].IsSequence())
-      fail(node, where, "vertices: missing (or give box_face)");
+      fail(node, where, "vertices: missing (or give box_face or face)");
     std::vector<Eigen::Vector3d> vertices;
     for (size_t i = 0; i < node["vertices"].size(); ++i) {
       const YAML::Node v = node["vertices"][i];
@@ -103,15 +163,27 @@ class SurfaceFileReader {
     if (!node["normal"])
       fail(node, where, "normal: missing (the outward normal in the link frame)");
     const Eigen::Vector3d normal = read_vector(node, "normal", where);
-    Eigen::Vector3d x_axis;
-    const bool has_x = static_cast<bool>(node["x_axis"]);
-    if (has_x) x_axis = read_vector(node, "x_axis", where);
+    const std::optional<Eigen::Vector3d> x_axis = read_x_axis(node, where);
     Surface surface;
     std::string error;
-    if (!make_surface(name, link, link_name, vertices, normal, has_x ? &x_axis : nullptr, &surface,
-                      &error))
+    if (!make_surface(name, link, link_name, vertices, normal, x_axis ? &*x_axis : nullptr,
+                      &surface, &error))
       fail(node["vertices"], where, error);
     return surface;
+  }
+
+  std::optional<Eigen::Vector3d> read_x_axis(const YAML::Node& node, const std::string& where) {
+    if (!node["x_axis"]) return std::nullopt;
+    return read_vector(node, "x_axis", where);
+  }
+
+  double read_inset(const YAML::Node& node, const std::string& where) const {
+    if (!node["inset"]) return 0.0;
+    const double inset = read_number(node["inset"], where + ": inset");
+    if (inset < 0.0)
+      fail(node["inset"], where,
+           "inset: expected a margin >= 0 (m), found " + node["inset"].Scalar());
+    return inset;
   }
 
   Surface read_box_face(const YAML::Node& node, const std::string& where, const std::string& name,
@@ -127,11 +199,48 @@ class SurfaceFileReader {
              "box_index: expected a whole number >= 0, found " + node["box_index"].Scalar());
       box_index = static_cast<int>(index);
     }
-    const double inset = node["inset"] ? read_number(node["inset"], where + ": inset") : 0.0;
+    const double inset = read_inset(node, where);
+    const std::optional<Eigen::Vector3d> x_axis = read_x_axis(node, where);
     try {
-      return surface_from_box_face(model_, link, box_index, face, inset, name);
+      return surface_from_box_face(model_, link, box_index, face, inset, name,
+                                   x_axis ? &*x_axis : nullptr);
     } catch (const InputError& e) {
       fail(node["box_face"], where, e.what());
+    }
+  }
+
+  // `face: -z` or `face: [0, 0, -1]`: the direction, link frame, and its name for messages.
+  Eigen::Vector3d read_face_direction(const YAML::Node& node, const std::string& where,
+                                      std::string* label) const {
+    const YAML::Node face = node["face"];
+    if (face.IsScalar()) {
+      *label = face.Scalar();
+      const int axis = axis_index(*label);
+      if (axis < 0)
+        fail(face, where,
+             "face: expected one of +x -x +y -y +z -z or a direction [x, y, z], found \"" + *label +
+                 "\"");
+      return (axis % 2 == 0 ? 1.0 : -1.0) * Eigen::Vector3d::Unit(axis / 2);
+    }
+    const Eigen::Vector3d direction = read_vector(node, "face", where);
+    if (direction.norm() < 1e-9) fail(face, where, "face: the direction [0, 0, 0] has no sense");
+    std::ostringstream text;
+    text << "[" << face[0].Scalar() << ", " << face[1].Scalar() << ", " << face[2].Scalar() << "]";
+    *label = text.str();
+    return direction;
+  }
+
+  Surface read_link_face(const YAML::Node& node, const std::string& where, const std::string& name,
+                         int link) {
+    std::string label;
+    const Eigen::Vector3d direction = read_face_direction(node, where, &label);
+    const double inset = read_inset(node, where);
+    const std::optional<Eigen::Vector3d> x_axis = read_x_axis(node, where);
+    try {
+      return surface_from_link_face(model_, link, direction, label, inset,
+                                    x_axis ? &*x_axis : nullptr, name);
+    } catch (const InputError& e) {
+      fail(node["face"], where, e.what());
     }
   }
 
@@ -146,11 +255,9 @@ std::vector<Surface> load_surface_file(const std::string& path, const Model& mod
 }
 
 Surface surface_from_box_face(const Model& model, int link, int box_index, const std::string& face,
-                              double inset, const std::string& name) {
-  static const std::string kFaces[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
-  int face_index = -1;
-  for (int f = 0; f < 6; ++f)
-    if (face == kFaces[f]) face_index = f;
+                              double inset, const std::string& name,
+                              const Eigen::Vector3d* x_axis_L) {
+  const int face_index = axis_index(face);
   if (face_index < 0)
     throw InputError("box_face: expected one of +x -x +y -y +z -z, found \"" + face + "\"");
   const Link& l = model.links.at(link);
@@ -162,30 +269,17 @@ Surface surface_from_box_face(const Model& model, int link, int box_index, const
     throw InputError("link \"" + l.name + "\" has " + std::to_string(seen) +
                      " collision box(es), box_index " + std::to_string(box_index) +
                      " does not exist");
-  const int axis = face_index / 2;
-  const double sign = face_index % 2 == 0 ? 1.0 : -1.0;
-  // (u, v, sign * axis) right-handed, so corners listed (+,+) (-,+) (-,-) (+,-) are
-  // counter-clockwise.
-  int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  if (sign < 0) std::swap(u, v);
-  const Eigen::Vector3d half = 0.5 * box->shape.size;
-  const double hu = half[u] - inset, hv = half[v] - inset;
-  if (hu <= 0.0 || hv <= 0.0)
+  const PlanarFace whole = box_face(*box, face_index / 2, face_index % 2 == 0 ? 1.0 : -1.0);
+  const PlanarFace shrunk = inset_face(whole, inset, 0.0);
+  if (shrunk.vertices.empty())
     throw InputError("inset " + std::to_string(inset) + " m leaves nothing of face " + face +
                      " of link \"" + l.name + "\"");
-  std::vector<Eigen::Vector3d> vertices;
-  for (const auto& [su, sv] : {std::pair{1.0, 1.0}, {-1.0, 1.0}, {-1.0, -1.0}, {1.0, -1.0}}) {
-    Eigen::Vector3d p_G = Eigen::Vector3d::Zero();
-    p_G[axis] = sign * half[axis];
-    p_G[u] = su * hu;
-    p_G[v] = sv * hv;
-    vertices.push_back(box->T_LG * p_G);
-  }
-  const Eigen::Vector3d normal = box->T_LG.linear() * (sign * Eigen::Vector3d::Unit(axis));
-  const Eigen::Vector3d x_axis = box->T_LG.linear() * Eigen::Vector3d::Unit(u);
+  // Default x axis: the box's first axis in the face (from vertex 1 to vertex 0 of the whole face).
+  const Eigen::Vector3d box_x = (whole.vertices[0] - whole.vertices[1]).normalized();
   Surface surface;
   std::string error;
-  if (!make_surface(name, link, l.name, vertices, normal, &x_axis, &surface, &error, 1e-9))
+  if (!make_surface(name, link, l.name, shrunk.vertices, whole.normal, x_axis_L ? x_axis_L : &box_x,
+                    &surface, &error, 1e-9))
     throw InputError("face " + face + " of link \"" + l.name + "\": " + error);
   return surface;
 }

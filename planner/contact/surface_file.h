@@ -15,6 +15,18 @@
 //                                          # one of +x -x +y -y +z -z
 //       box_index: 0                       # optional: which box of the link (default 0)
 //       inset: 0.01                        # optional: shrink the face by this margin (m)
+//       x_axis: [0, 1, 0]                  # optional, as with vertices
+//     - name: r_sole
+//       link: r_foot
+//       face: -z                           # the flat face of the link's collision geometry
+//                                          # nearest this direction (link frame): +x ... -z or
+//                                          # [x, y, z] (link_faces.h)
+//       inset: 0.005                       # optional, as with box_face
+//       x_axis: [1, 0, 0]                  # optional, as with vertices
+//
+// Each surface gives exactly one of vertices, box_face and face, and only the keys of its kind:
+// any other key is refused with its line ("surfaces[2].x_axsi: unknown field (expected one of:
+// name, link, normal, vertices, x_axis)").
 //
 // Errors name the file, the line, the surface and the fault, e.g.
 //   "humanoid.surfaces.yaml:12: surface "l_palm": link "l_hand" is not in model "humanoid"".
@@ -31,8 +43,11 @@ std::vector<Surface> load_surface_file(const std::string& path, const Model& mod
 
 // One face ("+x" ... "-z", in the box's own frame) of box `box_index` among the link's
 // collision boxes, shrunk by `inset`, as a surface named `name` with its normal pointing out of the
-// box. Throws InputError when the link has no such box or the face name is unknown.
+// box. Its x axis: `x_axis_L` (link frame) projected on the face when given, else the box's first
+// axis in the face (link_faces.h, box_face). Throws InputError when the link has no such box or
+// the face name is unknown.
 Surface surface_from_box_face(const Model& model, int link, int box_index, const std::string& face,
-                              double inset, const std::string& name);
+                              double inset, const std::string& name,
+                              const Eigen::Vector3d* x_axis_L = nullptr);
 
 }  // namespace stanceplan

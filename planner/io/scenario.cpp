@@ -205,7 +205,7 @@ class ScenarioReader {
       fail(kind, join(field, "kind"),
            "expected floating, fixed, object or environment, found \"" + kind.Scalar() + "\"");
     e.urdf = path_of(require(node, "urdf", field), join(field, "urdf"));
-    if (node["surfaces"]) e.surfaces = path_of(node["surfaces"], join(field, "surfaces"));
+    if (node["surfaces"]) read_entity_surfaces(node["surfaces"], join(field, "surfaces"), e);
     if (node["srdf"]) e.srdf = path_of(node["srdf"], join(field, "srdf"));
     if (const YAML::Node paths = node["package_paths"]) {
       if (!paths.IsSequence())
@@ -228,6 +228,44 @@ class ScenarioReader {
       fail(node["configuration"], join(field, "configuration"),
            "the environment has no configuration");
     return e;
+  }
+
+  // surfaces: a surface file, `auto`, or `{auto: {slope: 30, ...}}`: surfaces extracted from the
+  // environment's collision geometry (planner/contact/affordances.h).
+  void read_entity_surfaces(const YAML::Node& node, const std::string& field, EntitySpec& e) const {
+    if (!(node.IsScalar() && node.Scalar() == "auto") && !node.IsMap()) {
+      e.surfaces = path_of(node, field);
+      return;
+    }
+    if (e.kind != EntityKind::Environment)
+      fail(node, field,
+           "auto surfaces are for environments only (entity \"" + e.name + "\" is " +
+               to_string(e.kind) + "): give a surface file");
+    AffordanceOptions options;
+    if (node.IsMap()) {
+      expect_keys(node, field, {"auto"});
+      const YAML::Node o = require(node, "auto", field);
+      const std::string f = join(field, "auto");
+      if (!o.IsNull())
+        expect_keys(o, f,
+                    {"slope", "lean", "angle_tolerance", "offset_tolerance", "min_area", "inset"});
+      auto read = [&](const char* key, double max, const char* unit, double* out) {
+        if (o.IsNull() || !o[key]) return;
+        *out = number(o[key], join(f, key));
+        if (*out < 0.0 || *out > max)
+          fail(o[key], join(f, key),
+               std::string("expected a number from 0 to ") + (max > 1e9 ? "infinity" : "90") +
+                   " (" + unit + "), found " + o[key].Scalar());
+      };
+      const double kNoMax = std::numeric_limits<double>::max();
+      read("slope", 90.0, "degrees", &options.slope);
+      read("lean", 90.0, "degrees", &options.lean);
+      read("angle_tolerance", 90.0, "degrees", &options.angle_tolerance);
+      read("offset_tolerance", kNoMax, "m", &options.offset_tolerance);
+      read("min_area", kNoMax, "m^2", &options.min_area);
+      read("inset", kNoMax, "m", &options.inset);
+    }
+    e.auto_surfaces = options;
   }
 
   // A (partial) configuration of entity e written into q: an SRDF group state first, then the
@@ -581,9 +619,11 @@ class ScenarioReader {
 
   void read_solver(const YAML::Node& node, Scenario& s) const {
     if (!node) return;
-    expect_keys(node, "solver", {"max_iterations", "tolerance"});
+    expect_keys(node, "solver", {"max_iterations", "tolerance", "stall_after"});
     if (node["max_iterations"])
       s.solver.max_iterations = integer(node["max_iterations"], "solver.max_iterations", 1);
+    if (node["stall_after"])
+      s.solver.stall.after = integer(node["stall_after"], "solver.stall_after", 0);
   }
 
   std::string path_;

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "planner/contact/affordances.h"
 #include "planner/contact/surface_file.h"
 #include "planner/model/urdf_loader.h"
 
@@ -16,8 +17,11 @@ Scene build_scene(const SceneSpec& spec, HullCache* cache) {
     UrdfOptions options;
     options.packages.directories = e.package_paths;
     auto model = std::make_shared<Model>(load_urdf(e.urdf, options));
-    surfaces.push_back(e.surfaces.empty() ? std::vector<Surface>{}
-                                          : load_surface_file(e.surfaces, *model));
+    if (e.auto_surfaces)
+      surfaces.push_back(extract_surfaces(*model, e.T_WB, *e.auto_surfaces));
+    else
+      surfaces.push_back(e.surfaces.empty() ? std::vector<Surface>{}
+                                            : load_surface_file(e.surfaces, *model));
     Entity entity;
     entity.name = e.name;
     entity.kind = e.kind;

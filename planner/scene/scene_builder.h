@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "planner/contact/affordances.h"
 #include "planner/scene/scene.h"
 
 namespace stanceplan {
@@ -16,7 +17,10 @@ struct EntitySpec {
   EntityKind kind = EntityKind::FixedRobot;
   std::string urdf;
   std::string surfaces;  // optional
-  std::string srdf;      // optional: disabled collision pairs
+  // `surfaces: auto`: surfaces extracted from the collision geometry instead of a file
+  // (planner/contact/affordances.h); environments only.
+  std::optional<AffordanceOptions> auto_surfaces;
+  std::string srdf;  // optional: disabled collision pairs
   std::vector<std::string> package_paths;
   Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();  // fixed robots and environment
 };

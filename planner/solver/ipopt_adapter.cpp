@@ -118,20 +118,25 @@ class PostureTnlp : public Ipopt::TNLP {
     return all_finite(values, nele_hess);
   }
 
-  // Cancellation between iterations (the search's cancel flag).
-  bool intermediate_callback(Ipopt::AlgorithmMode, Ipopt::Index, Ipopt::Number, Ipopt::Number,
-                             Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Number,
-                             Ipopt::Number, Ipopt::Number, Ipopt::Index, const Ipopt::IpoptData*,
-                             Ipopt::IpoptCalculatedQuantities*) override {
-    return !(options_.cancel && options_.cancel->load());
+  // Between iterations: the search's cancel flag, then the stall rule on the constraint violation.
+  bool intermediate_callback(Ipopt::AlgorithmMode, Ipopt::Index iteration, Ipopt::Number,
+                             Ipopt::Number inf_pr, Ipopt::Number, Ipopt::Number, Ipopt::Number,
+                             Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Index,
+                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    if (options_.cancel && options_.cancel->load()) return false;
+    stalled = stall_.stalled(iteration, inf_pr);
+    return !stalled;
   }
 
   Eigen::VectorXd final_x;
   double final_objective = 0.0;
+  bool stalled = false;
+  const std::string& stall_reason() const { return stall_.reason(); }
 
  private:
   PostureNlp& nlp_;
   const SolverOptions& options_;
+  StallMonitor stall_{options_.stall, options_.max_iterations};
 };
 
 struct StatusInfo {
@@ -239,6 +244,10 @@ IpoptRun run_ipopt(PostureNlp& nlp, const SolverOptions& options) {
   const StatusInfo info = classify(status);
   run.status = info.status;
   run.message = info.name;
+  if (status == Ipopt::User_Requested_Stop && tnlp->stalled) {
+    run.status = PostureStatus::IterationLimit;
+    run.message = "Stalled (" + tnlp->stall_reason() + ")";
+  }
   if (Ipopt::IsValid(app->Statistics())) run.iterations = app->Statistics()->IterationCount();
   run.x = tnlp->final_x.size() == nlp.n() ? tnlp->final_x : Eigen::VectorXd();
   run.objective = tnlp->final_objective;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "planner/contact/contact.h"
+#include "planner/solver/stall_monitor.h"
 
 namespace stanceplan {
 
@@ -66,6 +67,9 @@ struct SolverOptions {
   bool balance_starting_forces = true;
   HessianMode hessian = HessianMode::Analytic;
   int max_iterations = 100;
+  // A solve whose constraint violation stalls stops before max_iterations (stall_monitor.h):
+  // status IterationLimit, message "Stalled (...)". stall.after = 0: every solve gets its budget.
+  StallRule stall;
   double tolerance = 1e-6;  // constraint violation (Ipopt constr_viol_tol): every physical residual
   // Complementarity (compl_inf_tol): the products of an inequality's slack and its multiplier, e.g.
   // a cone coefficient (N) times its bound multiplier. 1e-4 instead of 1e-6 ends a warm solve 1-3

@@ -39,5 +39,31 @@ TEST(Untuned, TheDualArmHandOverPlansWithoutImpossibleCylinderContacts) {
   EXPECT_LE(result.solver_calls, 558);
 }
 
+// The stall rule (solver.stall_after, off by default; planner/solver/stall_monitor.h) on the
+// side-step: stalled solves are stopped (their events say so), and the plan is the one found
+// without the rule, step for step, with the same number of solver calls.
+TEST(Untuned, TheStallRuleStopsHopelessSolvesAndKeepsTheSideStepsPlan) {
+  const Scenario plain = load_scenario(test::source_path("scenarios/untuned/side_step.yaml"));
+  Scenario stalling = plain;
+  stalling.solver.stall.after = 40;
+  SearchOptions options = stalling.search;
+  options.threads = 1;
+  StanceSearch search(stalling, options);
+  int stalled = 0;
+  search.set_observer([&](const SearchEvent& e) {
+    if (e.message.rfind("Stalled (constraint violation ", 0) == 0) ++stalled;
+  });
+  const SearchResult with_rule = search.run();
+  const SearchResult without = plan_untuned(plain);
+  test::expect_certified(stalling, with_rule, "untuned_side_step_stall");
+  ASSERT_EQ(with_rule.status, PlanStatus::Found) << with_rule.message;
+  ASSERT_EQ(without.status, PlanStatus::Found) << without.message;
+  EXPECT_GT(stalled, 0);
+  EXPECT_EQ(with_rule.solver_calls, without.solver_calls);
+  ASSERT_EQ(with_rule.plan.steps.size(), without.plan.steps.size());
+  for (size_t i = 0; i < without.plan.steps.size(); ++i)
+    EXPECT_LT((with_rule.plan.steps[i].q - without.plan.steps[i].q).norm(), 1e-9) << "step " << i;
+}
+
 }  // namespace
 }  // namespace stanceplan

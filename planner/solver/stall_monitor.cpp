@@ -1,0 +1,39 @@
+#include "planner/solver/stall_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace stanceplan {
+
+StallMonitor::StallMonitor(const StallRule& rule, int max_iterations) : rule_(rule) {
+  prefix_best_.reserve(size_t(std::max(0, max_iterations)) + 16);
+  history_.reserve(prefix_best_.capacity());
+}
+
+bool StallMonitor::stalled(int iteration, double violation) {
+  if (iteration < 0) return false;
+  // Ipopt counts from 0 without gaps; fill a gap (never expected) with the value itself.
+  while (int(history_.size()) <= iteration) {
+    const double best = prefix_best_.empty() ? violation : std::min(prefix_best_.back(), violation);
+    history_.push_back(violation);
+    prefix_best_.push_back(best);
+  }
+  history_[size_t(iteration)] = violation;
+  if (rule_.after <= 0 || iteration < rule_.after || iteration < rule_.window) return false;
+  if (!(violation > rule_.near_feasible)) return false;
+  const int split = iteration - rule_.window;  // best before: iterations 0..split
+  const double before = prefix_best_[size_t(split)];
+  double recent = violation;
+  for (int i = split + 1; i < iteration; ++i) recent = std::min(recent, history_[size_t(i)]);
+  if (recent * rule_.factor <= before || !std::isfinite(recent)) return false;
+  char text[160];
+  std::snprintf(text, sizeof(text),
+                "constraint violation %.3g at iteration %d, best %.3g over the last %d iterations, "
+                "not %gx below %.3g (best up to iteration %d)",
+                violation, iteration, recent, rule_.window, rule_.factor, before, split);
+  reason_ = text;
+  return true;
+}
+
+}  // namespace stanceplan
