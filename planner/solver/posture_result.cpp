@@ -24,11 +24,11 @@ double residual_unit(const std::string& family) {
   return 1e-3;
 }
 
-std::string PostureResult::worst_family() const {
+std::string PostureResult::worst_family(double beyond) const {
   std::string worst;
   double value = -1.0;
   for (const auto& [family, residual] : residuals)
-    if (residual / residual_unit(family) > value) {
+    if (residual > beyond && residual / residual_unit(family) > value) {
       value = residual / residual_unit(family);
       worst = family;
     }

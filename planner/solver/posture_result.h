@@ -46,8 +46,9 @@ struct PostureResult {
   // For the families of one contact (contact_geometry, polygon): the request contact whose row is
   // the family's worst.
   std::map<std::string, int> residual_contacts;
-  // The family whose residual is largest in its own unit (residual_unit): the one to blame.
-  std::string worst_family() const;
+  // The family whose residual is largest in its own unit (residual_unit), among those whose
+  // residual exceeds `beyond`: the one to blame ("" when none does).
+  std::string worst_family(double beyond = -1.0) const;
   // "" when every number of the solution (q, forces, torques, placements) is finite; else the
   // first that is not, e.g. "q[12]" or "force 3".
   std::string non_finite_part() const;

@@ -315,21 +315,6 @@ std::string rounds_exhausted(bool collisions_grew, bool torques_grew, int rounds
          " after " + std::to_string(rounds) + " active-set rounds";
 }
 
-// The family to blame at the final iterate: among those beyond the constraint tolerance, the one
-// whose residual is largest in its own unit (residual_unit); when none is beyond it, the largest
-// in its unit overall. Second: whether it is beyond the tolerance.
-std::pair<std::string, bool> family_to_blame(const PostureResult& result, double tolerance) {
-  std::string blamed;
-  double ratio = -1.0;
-  for (const auto& [family, residual] : result.residuals)
-    if (residual > tolerance && residual / residual_unit(family) > ratio) {
-      ratio = residual / residual_unit(family);
-      blamed = family;
-    }
-  if (!blamed.empty()) return {blamed, true};
-  return {result.worst_family(), false};
-}
-
 // Appends the family to blame at the final iterate to a failed result's message, with its residual
 // against the constraint tolerance (a stop on the iteration limit may leave every constraint
 // within it: then the dual or complementarity test is what failed, and the message says so), the
@@ -339,7 +324,10 @@ void name_worst_family(const Scene& scene, const PostureRequest& request,
                        const std::vector<bool>* excluded, const SolverOptions& options,
                        PostureResult& result) {
   if (result.residuals.empty()) return;
-  const auto [family, violated] = family_to_blame(result, options.tolerance);
+  // Blamed: the worst in its own unit among the families beyond the tolerance, else overall.
+  const std::string beyond = result.worst_family(options.tolerance);
+  const bool violated = !beyond.empty();
+  const std::string family = violated ? beyond : result.worst_family();
   char figures[96];
   std::snprintf(figures, sizeof(figures), " (%.1e, tolerance %.0e)", result.residuals.at(family),
                 options.tolerance);

@@ -7,12 +7,13 @@
 namespace stanceplan {
 
 StallMonitor::StallMonitor(const StallRule& rule, int max_iterations) : rule_(rule) {
+  if (rule_.after <= 0) return;  // off: no history, nothing allocated
   prefix_best_.reserve(size_t(std::max(0, max_iterations)) + 16);
   history_.reserve(prefix_best_.capacity());
 }
 
 bool StallMonitor::stalled(int iteration, double violation) {
-  if (iteration < 0) return false;
+  if (rule_.after <= 0 || iteration < 0) return false;
   // Ipopt counts from 0 without gaps; fill a gap (never expected) with the value itself.
   while (int(history_.size()) <= iteration) {
     const double best = prefix_best_.empty() ? violation : std::min(prefix_best_.back(), violation);
@@ -20,7 +21,7 @@ bool StallMonitor::stalled(int iteration, double violation) {
     prefix_best_.push_back(best);
   }
   history_[size_t(iteration)] = violation;
-  if (rule_.after <= 0 || iteration < rule_.after || iteration < rule_.window) return false;
+  if (iteration < rule_.after || iteration < rule_.window) return false;
   if (!(violation > rule_.near_feasible)) return false;
   const int split = iteration - rule_.window;  // best before: iterations 0..split
   const double before = prefix_best_[size_t(split)];

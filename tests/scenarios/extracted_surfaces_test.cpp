@@ -13,11 +13,7 @@
 namespace stanceplan {
 namespace {
 
-SearchResult plan_with_one_process(const Scenario& scenario) {
-  SearchOptions options = scenario.search;
-  options.threads = 1;
-  return StanceSearch(scenario, options).run();
-}
+using test::plan_with_one_process;
 
 std::string contacts_of(const Scenario& scenario, const PlanStep& step) {
   std::string out;

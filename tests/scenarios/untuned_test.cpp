@@ -11,17 +11,13 @@
 namespace stanceplan {
 namespace {
 
-SearchResult plan_untuned(const Scenario& scenario) {
-  SearchOptions options = scenario.search;
-  options.threads = 1;
-  return StanceSearch(scenario, options).run();
-}
+using test::plan_with_one_process;
 
 // The walk with a turn: repeated hopeless candidates (knees on the floor from the same standing
 // posture) are deferred (failure_memo.h): 2 calls per step, the target.
 TEST(Untuned, TheWalkWithATurnPlansWithTwoSolverCallsPerStep) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/untuned/walk_turn.yaml"));
-  const SearchResult result = plan_untuned(scenario);
+  const SearchResult result = plan_with_one_process(scenario);
   test::expect_certified(scenario, result, "untuned_walk_turn");
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_LE(result.solver_calls, 2 * static_cast<int>(result.plan.steps.size()));
@@ -33,7 +29,7 @@ TEST(Untuned, TheWalkWithATurnPlansWithTwoSolverCallsPerStep) {
 TEST(Untuned, TheDualArmHandOverPlansWithoutImpossibleCylinderContacts) {
   const Scenario scenario =
       load_scenario(test::source_path("scenarios/untuned/dual_arm_handover.yaml"));
-  const SearchResult result = plan_untuned(scenario);
+  const SearchResult result = plan_with_one_process(scenario);
   test::expect_certified(scenario, result, "untuned_dual_arm_handover");
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_LE(result.solver_calls, 558);
@@ -54,7 +50,7 @@ TEST(Untuned, TheStallRuleStopsHopelessSolvesAndKeepsTheSideStepsPlan) {
     if (e.message.rfind("Stalled (constraint violation ", 0) == 0) ++stalled;
   });
   const SearchResult with_rule = search.run();
-  const SearchResult without = plan_untuned(plain);
+  const SearchResult without = plan_with_one_process(plain);
   test::expect_certified(stalling, with_rule, "untuned_side_step_stall");
   ASSERT_EQ(with_rule.status, PlanStatus::Found) << with_rule.message;
   ASSERT_EQ(without.status, PlanStatus::Found) << without.message;
