@@ -56,6 +56,10 @@ void add_inspect(CLI::App& cli, InspectOptions& options) {
                   "one-link model, fixed otherwise)")
       ->check(CLI::IsMember({"auto", "fixed", "floating", "object", "environment"}));
   cmd->add_flag("--json", options.json, "print one JSON object");
+  cmd->add_option("--png", options.png,
+                  "also draw the model and its surfaces (each named in its colour) to this PNG");
+  cmd->add_option("--view", options.view, "with --png: front | side | top | three-quarter")
+      ->check(CLI::IsMember({"front", "side", "top", "three-quarter"}));
   add_collision_matrix_options(*cmd, options);
 }
 

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "app/inspect_figure.h"
 #include "planner/collision/collision_matrix.h"
 #include "planner/collision/collision_model.h"
 #include "planner/contact/affordances.h"
@@ -258,6 +259,13 @@ int run_inspect(const InspectOptions& options, std::ostream& out, std::ostream& 
   if (options.json)
     for (const json& w : description["warnings"])
       err << "warning: " << w.get<std::string>() << "\n";
+  if (!options.png.empty()) {
+    const std::string caption = model->name + ": " + std::to_string(surfaces.size()) +
+                                (surfaces.size() == 1 ? " surface" : " surfaces") +
+                                (options.surfaces == "auto" ? " (extracted)" : "");
+    write_surface_figure({model, kind, surfaces, options.png, options.view, caption});
+    if (!options.json) out << "wrote " << options.png << "\n";
+  }
   return 0;
 }
 

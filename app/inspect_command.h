@@ -1,7 +1,8 @@
 #pragma once
 // `stanceplan inspect MODEL.urdf`: what a model is (kind, dofs, joints and limits, mass, links,
 // surfaces, collision geometry), as text or one JSON object; with --collision-matrix, the link
-// pairs a computed self-collision matrix disables, optionally written as an SRDF.
+// pairs a computed self-collision matrix disables, optionally written as an SRDF; with --png, a
+// picture of its contact surfaces.
 #include <cstdint>
 #include <iosfwd>
 #include <string>
@@ -23,6 +24,9 @@ struct InspectOptions {
   int samples = 1000;
   uint64_t seed = 0;
   bool never = false;
+  // --png: the model with its surfaces drawn and named (app/inspect_figure.h), from --view.
+  std::string png;
+  std::string view = "three-quarter";
 };
 
 // Throws InputError on bad input.

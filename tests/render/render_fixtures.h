@@ -18,7 +18,7 @@
 
 namespace stanceplan::test {
 
-// Looking along -x at the origin from 5 m, z up, 30 degrees of view: world y runs leftwards in the
+// Looking along -x at the origin from 5 m, z up, 30 degrees of view: world y runs rightwards in the
 // image.
 inline render::Camera camera_on_x_axis() {
   render::Camera camera;
