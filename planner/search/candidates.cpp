@@ -126,6 +126,24 @@ bool rigidly_incompatible(const Scene& scene, const std::vector<ModelData>& data
   return false;
 }
 
+// The generalisation to two links of one robot joined by joints (normal_angle_range.h): contacts
+// X-X' and Y-Y' whose X and Y are on different bodies of one entity and whose X' and Y' are on one
+// rigid body (the world: floor and treads) need angle(n_X, n_Y) = angle(n_X', n_Y'), which the
+// joint limits between X's and Y's links may not allow (exact, up to the same tolerance).
+bool normals_cannot_meet(const Scene& scene, const std::vector<ModelData>& data, const Contact& c,
+                         const Stance& stance, NormalAngleTable& angles) {
+  for (const Contact& k : stance.contacts())
+    for (const auto& [x, x_partner] : {std::pair(c.s1, c.s2), std::pair(c.s2, c.s1)})
+      for (const auto& [y, y_partner] : {std::pair(k.s1, k.s2), std::pair(k.s2, k.s1)}) {
+        if (x.entity != y.entity || rigid_body(scene, x) == rigid_body(scene, y)) continue;
+        if (rigid_body(scene, x_partner) != rigid_body(scene, y_partner)) continue;
+        const double needed =
+            angle_between(normal_W(scene, data, x_partner), normal_W(scene, data, y_partner));
+        if (!angles.between(x, y).contains(needed, kRigidAngleTolerance)) return true;
+      }
+  return false;
+}
+
 }  // namespace
 
 bool link_is_static(const Scene& scene, int entity, int link) {
@@ -152,7 +170,8 @@ double surface_gap(const Scene& scene, const std::vector<ModelData>& data, Surfa
 
 std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,
                                             const Stance& stance, const Stance& goal,
-                                            const SearchOptions& options) {
+                                            const SearchOptions& options,
+                                            NormalAngleTable* angles) {
   std::vector<Candidate> out;
   // Adj-: remove one contact (case 2).
   for (int i = 0; i < stance.size(); ++i) {
@@ -193,6 +212,7 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       if (!allowed_pair(scene, c, options) || !allowed_now(scene, c, stance, goal, options))
         continue;
       if (rigidly_incompatible(scene, data, c, stance)) continue;
+      if (angles != nullptr && normals_cannot_meet(scene, data, c, stance, *angles)) continue;
       if (surface_gap(scene, data, c.s1, c.s2) > options.contact_reach) continue;
       out.push_back({true, c});
     }

@@ -10,6 +10,9 @@
 //  - two contacts between the same two rigid bodies whose surface normals make different angles
 //    on the two bodies (a planar contact turns s1's normal against s2's, so the angles must agree;
 //    exact): a side of a standing cylinder on the platform it stands on, or on the floor;
+//  - the same for two links of one robot joined by joints, when the joint limits between them
+//    cannot give their normals the angle the partners' normals make (normal_angle_range.h;
+//    exact): a knee flat on the floor while the same leg's sole is flat on the floor or a tread;
 //  - removing the last contact that supports a floating body with mass: no equilibrium is
 //    possible without support (exact), and fixed contacts are never removed (docs/METHOD.md);
 //  - removing a contact that leaves such a body fewer than SearchOptions::min_contacts (option);
@@ -24,6 +27,7 @@
 #include "planner/contact/contact.h"
 #include "planner/model/model_data.h"
 #include "planner/scene/scene.h"
+#include "planner/search/normal_angle_range.h"
 #include "planner/search/search_options.h"
 
 namespace stanceplan {
@@ -35,9 +39,11 @@ struct Candidate {
 
 // `data` holds forward kinematics of every entity at the node's configuration. `goal` supplies the
 // orientation (which surface is s1) and the bilateral/fixed tags of contacts it contains.
+// `angles` (kept by the caller across calls) enables the normal-angle rule; null skips it.
 std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,
                                             const Stance& stance, const Stance& goal,
-                                            const SearchOptions& options);
+                                            const SearchOptions& options,
+                                            NormalAngleTable* angles = nullptr);
 
 // Distance between two surfaces' polygons in the world (0 when they touch or cross).
 double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,

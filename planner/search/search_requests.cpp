@@ -61,7 +61,7 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   std::vector<Attempt> batch;
   const auto data = system_kinematics(problem_.scene.system, node.q());
   for (const Candidate& c : enumerate_candidates(problem_.scene, data, node.stance(), goal_,
-                                                 options_for_milestone(t_))) {
+                                                 options_for_milestone(t_), &angles_)) {
     if (undoes_last_step(node, c)) continue;
     // Failed from the same situation before: solved only when backtracking (failure_memo.h).
     const bool repeated = options_.defer_repeated_failures &&

@@ -97,6 +97,7 @@ class StanceSearch::Run {
   // other initial guesses; the others when the open queue is empty.
   std::deque<Attempt> urgent_, retries_;
   FailureMemo failures_;  // candidates that failed every attempt (defer_repeated_failures)
+  NormalAngleTable angles_{problem_.scene};  // the normal-angle rule's bounds (candidates.h)
   // The milestone each node was last expanded for (-1: not yet), for the last form of
   // backtracking.
   std::vector<int> expanded_for_;
