@@ -425,6 +425,14 @@ void PostureSolver::validate(const PostureRequest& request) const {
       throw std::invalid_argument("contact " + scene_.surfaces.id(system, task.contact.s1) + " - " +
                                   scene_.surfaces.id(system, task.contact.s2) +
                                   " joins two surfaces of one link");
+    // Point surfaces (surface.h) are s1 only. Their geometry rows are in the program, their force
+    // not yet (E16-E18 need the couple -r z2 x f, WIP_POINT_CONTACTS.md): a loaded point contact is
+    // refused rather than solved with its force at the sphere's centre.
+    if (s2.is_point() || (s1.is_point() && task.loaded))
+      throw std::invalid_argument("contact " + scene_.surfaces.id(system, task.contact.s1) + " - " +
+                                  scene_.surfaces.id(system, task.contact.s2) +
+                                  (s2.is_point() ? ": a point surface can only be s1"
+                                                 : ": a point contact cannot carry force yet"));
   }
 }
 

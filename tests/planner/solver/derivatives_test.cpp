@@ -7,6 +7,7 @@
 
 #include "planner/solver/posture_nlp.h"
 #include "planner/solver/posture_solver.h"
+#include "tests/support/point_tips.h"
 #include "tests/support/scenes.h"
 
 namespace stanceplan {
@@ -16,6 +17,7 @@ struct Program {
   std::string name;
   PostureRequest request;
   bool all_pairs = false;  // put every collision pair in the program (penetrating ones included)
+  const Scene* scene = nullptr;  // nullptr: the humanoid before the wall
 };
 
 class Derivatives : public ::testing::Test {
@@ -33,7 +35,7 @@ class Derivatives : public ::testing::Test {
   }
 
   void check(const Program& program) {
-    const Scene& scene = *scene_;
+    const Scene& scene = program.scene ? *program.scene : *scene_;
     SolverOptions options;
     options.w_torque = 1e-4;
     options.w_force = 1e-3;
@@ -156,6 +158,20 @@ TEST_F(Derivatives, CollisionRowsIncludingPenetratingPairs) {
   q[7 + m.find_dof("l_knee_p")] = 2.3;
   q[7 + m.find_dof("r_shoulder_r")] = -0.4;
   p.request.q_init = q;
+  check(p);
+}
+
+// Point contacts (round fingertips, geometry only): E9 with the centre one radius above s2's plane,
+// free (case 1, with an E25 target) and at a fixed placement (E10-E11).
+TEST_F(Derivatives, PointContactsFreeAndFixed) {
+  const Scene s = test::humanoid_scene_with_tips("wall");
+  Program p{"point", {}, false, &s};
+  ContactTask tip = test::task(s, "robot/l_tip", "env/wall", false);
+  tip.placement_target = Placement{0.1, -0.2, 0.0};
+  ContactTask fixed_tip = test::task(s, "robot/r_tip", "env/floor", false);
+  fixed_tip.placement = Placement{0.3, -0.4, 0.7};
+  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"), tip, fixed_tip};
+  p.request.q_init = test::standing_configuration(s);
   check(p);
 }
 

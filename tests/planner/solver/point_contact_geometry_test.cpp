@@ -1,0 +1,131 @@
+// Point contacts in the IK-statics program, geometry only (their force is not in the program yet):
+// the rows of ContactGeometryBlock for a sphere at a point of a link (E9 with the centre r above
+// s2's plane; E10-E11 for a fixed placement; no E8, E12, E13), their Hessian against central
+// differences of the analytic gradient, a solve that touches a wall with a round fingertip, and
+// the refusal of a loaded point contact. The Jacobians are in derivatives_test.cpp.
+#include <gtest/gtest.h>
+
+#include "planner/model/kinematics.h"
+#include "planner/solver/posture_nlp.h"
+#include "planner/solver/posture_solver.h"
+#include "tests/support/lagrangian.h"
+#include "tests/support/point_tips.h"
+
+namespace stanceplan {
+namespace {
+
+class PointContactGeometry : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { scene_ = new Scene(test::humanoid_scene_with_tips("wall")); }
+  static void TearDownTestSuite() { delete scene_; }
+
+  // Both soles loaded at their free placements, the left tip added (case 1: free, pulled to a
+  // target) on the wall, the right tip touched at a fixed placement on the floor.
+  PostureRequest request() const {
+    const Scene& s = *scene_;
+    PostureRequest r;
+    ContactTask tip = test::task(s, "robot/l_tip", "env/wall", false);
+    tip.placement_target = Placement{0.1, -0.2, 0.0};
+    ContactTask fixed_tip = test::task(s, "robot/r_tip", "env/floor", false);
+    fixed_tip.placement = Placement{0.3, -0.4, 0.7};
+    r.contacts = {test::task(s, "robot/l_sole", "env/floor"),
+                  test::task(s, "robot/r_sole", "env/floor"), tip, fixed_tip};
+    r.q_init = test::standing_configuration(s);
+    return r;
+  }
+
+  // The world position of a tip's centre (the robot is entity 0, at offset 0 of q).
+  static Eigen::Vector3d tip_centre(const Eigen::VectorXd& q, const std::string& id) {
+    const Entity& robot = scene_->system.entity(0);
+    ModelData data(robot);
+    forward_kinematics(robot, q.head(robot.nq()), data);
+    const Surface& tip = scene_->surfaces.get(test::surface(*scene_, id));
+    return data.T_WL[tip.link] * tip.center_L();
+  }
+
+  static Scene* scene_;
+};
+Scene* PointContactGeometry::scene_ = nullptr;
+
+TEST_F(PointContactGeometry, RowsAreTheCentreAboveThePlaneAndThePlacement) {
+  const PostureRequest r = request();
+  SolverOptions options;
+  PostureNlp nlp(*scene_, r, options, {});
+  std::vector<int> geometry_rows;
+  for (const auto& block : nlp.blocks())
+    if (block->family() == "contact_geometry") geometry_rows.push_back(block->rows());
+  EXPECT_EQ(geometry_rows, (std::vector<int>{4, 4, 1, 3}));  // soles, free tip, fixed tip
+  Eigen::VectorXd x(nlp.n()), g(nlp.m()), lower(nlp.m()), upper(nlp.m());
+  nlp.starting_point(x.data());
+  nlp.constraints(x.data(), true, g.data());
+  nlp.constraint_bounds(lower.data(), upper.data());
+  int fixed_first = -1;
+  for (size_t b = 0, seen = 0; b < nlp.blocks().size(); ++b)
+    if (nlp.blocks()[b]->family() == "contact_geometry" && seen++ == 3)
+      fixed_first = nlp.block_first_row(int(b));
+  ASSERT_GE(fixed_first, 0);
+  EXPECT_EQ(lower[fixed_first], 0.02);  // E9: the centre one radius above the floor
+  EXPECT_EQ(upper[fixed_first], 0.02);
+  EXPECT_EQ(lower[fixed_first + 1], 0.3);  // E10-E11: the centre's (x, y) on the floor
+  EXPECT_EQ(lower[fixed_first + 2], -0.4);
+  // At the standing start the right tip's centre is its height above the floor in E9.
+  EXPECT_NEAR(g[fixed_first], tip_centre(r.q_init, "robot/r_tip").z(), 1e-12);
+}
+
+TEST_F(PointContactGeometry, HessianMatchesCentralDifferences) {
+  SolverOptions options;
+  options.hessian = HessianMode::Analytic;
+  options.w_torque = 1e-3;
+  const PostureRequest r = request();
+  PostureNlp nlp(*scene_, r, options, {});
+  const test::LagrangianPoint point = test::random_lagrangian_point(nlp, 21, 0.03);
+  std::vector<double> values(size_t(nlp.hessian_nnz()));
+  nlp.hessian_values(point.x.data(), true, point.obj_factor, point.y.data(), values.data());
+  const Eigen::MatrixXd H = nlp.dense_hessian();
+  const int n = nlp.n();
+  Eigen::MatrixXd H_fd(n, n);
+  for (int k = 0; k < n; ++k) {
+    const double h = 1e-6 * std::max(1.0, std::abs(point.x[k]));
+    Eigen::VectorXd xp = point.x, xm = point.x;
+    xp[k] += h;
+    xm[k] -= h;
+    H_fd.col(k) = (test::lagrangian_gradient(nlp, xp, point.obj_factor, point.y) -
+                   test::lagrangian_gradient(nlp, xm, point.obj_factor, point.y)) /
+                  (2.0 * h);
+  }
+  const double scale = std::max(1.0, H_fd.cwiseAbs().maxCoeff());
+  EXPECT_LE((H - H_fd).cwiseAbs().maxCoeff(), 1e-6 * scale);
+}
+
+TEST_F(PointContactGeometry, AFingertipTouchesTheWallOneRadiusFromIt) {
+  PostureRequest r = request();
+  r.contacts.pop_back();  // the standing robot cannot also reach the floor
+  const PostureSolver solver(*scene_, SolverOptions{});
+  const PostureResult result = solver.solve(r);
+  ASSERT_EQ(result.status, PostureStatus::Solved) << result.message;
+  // The wall's face is the plane x = 0.6: the centre is one radius in front of it.
+  EXPECT_NEAR(tip_centre(result.q, "robot/l_tip").x(), 0.6 - 0.02, 1e-6);
+}
+
+TEST_F(PointContactGeometry, ALoadedPointContactIsRefusedUntilItsForceIsModelled) {
+  PostureRequest r = request();
+  r.contacts[2].loaded = true;
+  try {
+    PostureSolver(*scene_, SolverOptions{}).validate_request(r);
+    FAIL() << "a loaded point contact was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "contact robot/l_tip - env/wall: a point contact cannot carry force yet");
+  }
+  r = request();
+  std::swap(r.contacts[2].contact.s1, r.contacts[2].contact.s2);
+  try {
+    PostureSolver(*scene_, SolverOptions{}).validate_request(r);
+    FAIL() << "a point surface as s2 was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "contact env/wall - robot/l_tip: a point surface can only be s1");
+  }
+}
+
+}  // namespace
+}  // namespace stanceplan
