@@ -5,8 +5,10 @@
 #include <random>
 #include <set>
 
+#include "planner/io/scenario.h"
 #include "planner/solver/posture_nlp.h"
 #include "planner/solver/posture_solver.h"
+#include "tests/support/paths.h"
 #include "tests/support/point_tips.h"
 #include "tests/support/scenes.h"
 
@@ -172,6 +174,30 @@ TEST_F(Derivatives, PointContactsFreeAndFixed) {
   fixed_tip.placement = Placement{0.3, -0.4, 0.7};
   p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"), tip, fixed_tip};
   p.request.q_init = test::standing_configuration(s);
+  check(p);
+}
+
+// Loaded point contacts: their force enters E16 and, at c - r z2, E17 (the torques E18 still take
+// it at the centre: the solver refuses loaded point contacts until they do).
+TEST_F(Derivatives, LoadedPointContactInEquilibrium) {
+  const Scene s = test::humanoid_scene_with_tips("wall");
+  Program p{"loaded point", {}, false, &s};
+  ContactTask fixed_tip = test::task(s, "robot/l_tip", "env/wall");
+  fixed_tip.placement = Placement{0.1, 0.2, 0.0};
+  // The right tip on the robot's own left thigh: s2 moves, so the offset -r z2 turns with it.
+  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"),
+                        test::task(s, "robot/r_tip", "robot/l_thigh"), fixed_tip};
+  p.request.q_init = test::standing_configuration(s);
+  check(p);
+}
+
+// Point fingertips holding the ball of hand_ball_rotate.yaml: the ball is an object, so E16-E17
+// hold for it and the offset -r z2 of each load point turns with the ball (s2).
+TEST_F(Derivatives, LoadedPointContactsOnAnObject) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/hand_ball_rotate.yaml"));
+  Program p{"point tips on the ball", {}, false, &scenario.scene};
+  p.request = test::with_point_tips(scenario);
+  ASSERT_EQ(p.request.contacts.size(), 4u);  // four fingertips
   check(p);
 }
 

@@ -2,13 +2,15 @@
 // the rows of ContactGeometryBlock for a sphere at a point of a link (E9 with the centre r above
 // s2's plane; E10-E11 for a fixed placement; no E8, E12, E13), their Hessian against central
 // differences of the analytic gradient, a solve that touches a wall with a round fingertip, and
-// the refusal of a loaded point contact. The Jacobians are in derivatives_test.cpp.
+// the refusal of a loaded point contact. The Jacobians are in derivatives_test.cpp. Loaded tips
+// (force in E16-E17 at c - r z2, built without the solver's refusal) for the Hessian only.
 #include <gtest/gtest.h>
 
 #include "planner/model/kinematics.h"
 #include "planner/solver/posture_nlp.h"
 #include "planner/solver/posture_solver.h"
 #include "tests/support/lagrangian.h"
+#include "tests/support/paths.h"
 #include "tests/support/point_tips.h"
 
 namespace stanceplan {
@@ -72,12 +74,9 @@ TEST_F(PointContactGeometry, RowsAreTheCentreAboveThePlaneAndThePlacement) {
   EXPECT_NEAR(g[fixed_first], tip_centre(r.q_init, "robot/r_tip").z(), 1e-12);
 }
 
-TEST_F(PointContactGeometry, HessianMatchesCentralDifferences) {
-  SolverOptions options;
-  options.hessian = HessianMode::Analytic;
-  options.w_torque = 1e-3;
-  const PostureRequest r = request();
-  PostureNlp nlp(*scene_, r, options, {});
+// max |H - H_fd| / scale of the analytic Hessian against central differences of the gradient.
+double hessian_error(const Scene& scene, const PostureRequest& r, const SolverOptions& options) {
+  PostureNlp nlp(scene, r, options, {});
   const test::LagrangianPoint point = test::random_lagrangian_point(nlp, 21, 0.03);
   std::vector<double> values(size_t(nlp.hessian_nnz()));
   nlp.hessian_values(point.x.data(), true, point.obj_factor, point.y.data(), values.data());
@@ -93,9 +92,37 @@ TEST_F(PointContactGeometry, HessianMatchesCentralDifferences) {
                    test::lagrangian_gradient(nlp, xm, point.obj_factor, point.y)) /
                   (2.0 * h);
   }
-  const double scale = std::max(1.0, H_fd.cwiseAbs().maxCoeff());
-  EXPECT_LE((H - H_fd).cwiseAbs().maxCoeff(), 1e-6 * scale);
+  return (H - H_fd).cwiseAbs().maxCoeff() / std::max(1.0, H_fd.cwiseAbs().maxCoeff());
 }
+
+class PointContactHessian : public PointContactGeometry,
+                            public ::testing::WithParamInterface<bool> {};
+
+// Unloaded tips (the geometry rows), or loaded ones (their force in E16-E17 at c - r z2 too).
+TEST_P(PointContactHessian, MatchesCentralDifferences) {
+  SolverOptions options;
+  options.hessian = HessianMode::Analytic;
+  options.w_torque = 1e-3;
+  PostureRequest r = request();
+  r.contacts[2].loaded = r.contacts[3].loaded = GetParam();
+  // Loaded, the left tip presses on the robot's own right thigh, whose normal turns with q (an
+  // internal force: the robot's E16-E17 terms cancel; the ball test below has them).
+  if (GetParam()) r.contacts[2].contact.s2 = test::surface(*scene_, "robot/r_thigh");
+  EXPECT_LE(hessian_error(*scene_, r, options), 1e-6);
+}
+
+// Fingertips holding the ball of hand_ball_rotate.yaml, loaded: the ball's E16-E17 take each force
+// at c - r z2, z2 turning with the ball.
+TEST(PointContactHessianOnAnObject, MatchesCentralDifferences) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/hand_ball_rotate.yaml"));
+  const PostureRequest r = test::with_point_tips(scenario);
+  scenario.solver.hessian = HessianMode::Analytic;
+  scenario.solver.w_torque = 1e-3;
+  EXPECT_LE(hessian_error(scenario.scene, r, scenario.solver), 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(PointContacts, PointContactHessian, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "Loaded" : "Touched"; });
 
 TEST_F(PointContactGeometry, AFingertipTouchesTheWallOneRadiusFromIt) {
   PostureRequest r = request();
