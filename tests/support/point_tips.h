@@ -25,10 +25,10 @@ inline Scene humanoid_scene_with_tips(const std::string& environment) {
   return scene;
 }
 
-// The initial stance of `scenario` with each s1 replaced by a point surface of radius 0.008 m at
+// The initial stance of `scenario` with each s1 replaced by a point surface of `radius` at
 // that surface's origin, added to its entity (hand_ball_rotate.yaml: fingertips holding the ball,
 // an object whose surfaces turn with it). Every contact loaded, free placements.
-inline PostureRequest with_point_tips(Scenario& scenario) {
+inline PostureRequest with_point_tips(Scenario& scenario, double radius = 0.008) {
   Scene& s = scenario.scene;
   PostureRequest request;
   for (const StanceContact& sc : scenario.initial_stance) {
@@ -37,7 +37,7 @@ inline PostureRequest with_point_tips(Scenario& scenario) {
     Surface tip;
     std::string error;
     make_point_surface(pad_surface.name + "_point", pad_surface.link, pad_surface.link_name,
-                       pad_surface.T_LS.translation(), 0.008, &tip, &error);
+                       pad_surface.T_LS.translation(), radius, &tip, &error);
     std::vector<Surface> surfaces = s.surfaces.of(pad.entity);
     surfaces.push_back(tip);
     s.surfaces.set(pad.entity, surfaces);

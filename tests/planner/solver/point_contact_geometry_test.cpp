@@ -121,6 +121,47 @@ TEST(PointContactHessianOnAnObject, MatchesCentralDifferences) {
   EXPECT_LE(hessian_error(scenario.scene, r, scenario.solver), 1e-6);
 }
 
+// E17's value: a fingertip pushing on the ball along one cone generator U_0 = (mu x2 + z2) /
+// sqrt(1 + mu^2) only, with lambda = 10 N. Its force acts at c - r z2: against a tip of radius 0 at
+// the same centre, the ball's moment changes by -(-r z2 x f) = r lambda mu / sqrt(1 + mu^2) y2.
+TEST(PointContactEquilibrium, TheForceActsOneRadiusBelowTheCentre) {
+  const double r = 0.008, lambda = 10.0;
+  Scenario sharp = load_scenario(test::source_path("scenarios/hand_ball_rotate.yaml"));
+  Scenario round = sharp;
+  const PostureRequest request_sharp = test::with_point_tips(sharp, 0.0);
+  const PostureRequest request_round = test::with_point_tips(round, r);
+  PostureNlp nlp_sharp(sharp.scene, request_sharp, sharp.solver, {});
+  PostureNlp nlp_round(round.scene, request_round, round.solver, {});
+  ASSERT_EQ(nlp_sharp.n(), nlp_round.n());
+  Eigen::VectorXd x(nlp_round.n());
+  nlp_round.starting_point(x.data());
+  const int nq = nlp_round.layout().nq;
+  x.tail(x.size() - nq).setZero();
+  x[nlp_round.layout().forces[0].first_column] = lambda;  // contact 0, generator 0
+  Eigen::VectorXd g_sharp(nlp_sharp.m()), g_round(nlp_round.m());
+  nlp_sharp.constraints(x.data(), true, g_sharp.data());
+  nlp_round.constraints(x.data(), true, g_round.data());
+  auto moment = [](PostureNlp& nlp, const Eigen::VectorXd& g) {
+    for (size_t b = 0; b < nlp.blocks().size(); ++b)
+      if (nlp.blocks()[b]->family() == "equilibrium")  // the ball's: the hand is fixed
+        return Eigen::Vector3d(g.segment<3>(nlp.block_first_row(int(b)) + 3));
+    return Eigen::Vector3d(Eigen::Vector3d::Constant(NAN));
+  };
+  const SurfaceRef s2 = request_round.contacts[0].contact.s2;
+  const Entity& ball = round.scene.system.entity(s2.entity);
+  ModelData data(ball);
+  forward_kinematics(ball, x.segment(round.scene.system.offset(s2.entity), ball.nq()), data);
+  const Surface& surface = round.scene.surfaces.get(s2);
+  const Eigen::Vector3d y2 = data.T_WL[surface.link].linear() * surface.T_LS.linear().col(1);
+  const double mu = round.solver.friction;
+  const double scale = 1.0 / (ball.model->total_mass * round.scene.gravity.norm());
+  const Eigen::Vector3d expected = scale * r * lambda * mu / std::sqrt(1.0 + mu * mu) * y2;
+  EXPECT_GT(expected.norm(), 1e-4);
+  EXPECT_TRUE((moment(nlp_round, g_round) - moment(nlp_sharp, g_sharp)).isApprox(expected, 1e-9))
+      << (moment(nlp_round, g_round) - moment(nlp_sharp, g_sharp)).transpose() << " vs "
+      << expected.transpose();
+}
+
 INSTANTIATE_TEST_SUITE_P(PointContacts, PointContactHessian, ::testing::Bool(),
                          [](const auto& info) { return info.param ? "Loaded" : "Touched"; });
 
