@@ -10,7 +10,7 @@ namespace {
 // p (surface.h): the moment of f is (p - r z2) x f, the vertex's plus the couple -r z2 x f. The
 // offset -r z2 turns with s2's link. 0 for a polygon contact.
 double point_radius(const NlpState& state, int task) {
-  return state.scene.surfaces.get(state.request.contacts[task].contact.s1).radius;
+  return state.constants[task].radius;
 }
 
 }  // namespace
@@ -105,7 +105,7 @@ void EquilibriumBlock::add_hessian(NlpState& state, const Eigen::Ref<const Eigen
     add_force_cross_curvature(state, k.e1, f.J_p[r.vertex], r.task, r.vertex, M, H);
     if (radius > 0.0) {
       add_vector_curvature(state, k.e2, k.l2, -radius * f.z2, M * f.f[r.vertex], H);
-      add_force_cross_curvature(state, k.e2, -radius * f.J_z2, r.task, r.vertex, M, H);
+      add_force_cross_curvature(state, k.e2, f.J_z2, r.task, r.vertex, -radius * M, H);
     }
   }
 }

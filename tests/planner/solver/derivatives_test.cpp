@@ -177,8 +177,8 @@ TEST_F(Derivatives, PointContactsFreeAndFixed) {
   check(p);
 }
 
-// Loaded point contacts: their force enters E16 and, at c - r z2, E17 (the torques E18 still take
-// it at the centre: the solver refuses loaded point contacts until they do).
+// Loaded point contacts: their force enters E16 and, at c - r z2, E17 and E18 (the couple
+// -r z2 x f turning with s2, on l1's joints and, for the thigh, on l2's).
 TEST_F(Derivatives, LoadedPointContactInEquilibrium) {
   const Scene s = test::humanoid_scene_with_tips("wall");
   Program p{"loaded point", {}, false, &s};

@@ -1,9 +1,9 @@
-// Point contacts in the IK-statics program, geometry only (their force is not in the program yet):
-// the rows of ContactGeometryBlock for a sphere at a point of a link (E9 with the centre r above
-// s2's plane; E10-E11 for a fixed placement; no E8, E12, E13), their Hessian against central
-// differences of the analytic gradient, a solve that touches a wall with a round fingertip, and
-// the refusal of a loaded point contact. The Jacobians are in derivatives_test.cpp. Loaded tips
-// (force in E16-E17 at c - r z2, built without the solver's refusal) for the Hessian only.
+// Point contacts in the IK-statics program: the rows of ContactGeometryBlock for a sphere at a
+// point of a link (E9 with the centre r above s2's plane; E10-E11 for a fixed placement; no E8,
+// E12, E13), the Hessian against central differences of the analytic gradient (tips touched, or
+// loaded: the force at c - r z2 in E16-E18), E17's and E18's values computed by hand, solves that
+// touch and lean on a wall with a round fingertip, and the refusal of a point s2. The Jacobians
+// are in derivatives_test.cpp.
 #include <gtest/gtest.h>
 
 #include "planner/model/kinematics.h"
@@ -175,17 +175,101 @@ TEST_F(PointContactGeometry, AFingertipTouchesTheWallOneRadiusFromIt) {
   EXPECT_NEAR(tip_centre(result.q, "robot/l_tip").x(), 0.6 - 0.02, 1e-6);
 }
 
-TEST_F(PointContactGeometry, ALoadedPointContactIsRefusedUntilItsForceIsModelled) {
+// Standing on both soles with the left fingertip loaded on the wall: the tip's force acts one
+// radius in front of its centre, on the wall's plane, and the solution balances the robot (E16-E17)
+// and its joints (E18) with the force there, recomputed here from the result alone.
+TEST_F(PointContactGeometry, ALoadedFingertipLeansOnTheWall) {
   PostureRequest r = request();
-  r.contacts[2].loaded = true;
-  try {
-    PostureSolver(*scene_, SolverOptions{}).validate_request(r);
-    FAIL() << "a loaded point contact was accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(),
-                 "contact robot/l_tip - env/wall: a point contact cannot carry force yet");
+  r.contacts.pop_back();
+  const PostureSolver solver(*scene_, SolverOptions{});
+  const PostureResult touched = solver.solve(r);  // case 1: the tip reaches the wall
+  ASSERT_EQ(touched.status, PostureStatus::Solved) << touched.message;
+  r.contacts[2].loaded = true;  // then leans on it from there
+  r.contacts[2].placement_target.reset();
+  r.q_init = touched.q;
+  const PostureResult result = solver.solve(r);
+  ASSERT_EQ(result.status, PostureStatus::Solved) << result.message;
+  EXPECT_NEAR(tip_centre(result.q, "robot/l_tip").x(), 0.6 - 0.02, 1e-6);
+  const Entity& robot = scene_->system.entity(0);
+  ModelData data(robot);
+  forward_kinematics(robot, result.q.head(robot.nq()), data);
+  const Eigen::Vector3d weight = robot.model->total_mass * scene_->gravity;
+  Eigen::Vector3d force = weight, moment = center_of_mass(robot, data).cross(weight);
+  Eigen::VectorXd generalized = Eigen::VectorXd::Zero(robot.nq());
+  Eigen::MatrixXd J(3, robot.nq());
+  double tip_force = 0.0;
+  for (const VertexForce& f : result.forces) {
+    const Surface& s1 = scene_->surfaces.get(r.contacts[size_t(f.contact)].contact.s1);
+    if (f.contact == 2) {
+      EXPECT_NEAR(f.point_W.x(), 0.6, 1e-6);  // on the wall's face
+      tip_force += f.force_W.norm();
+    }
+    force += f.force_W;
+    moment += f.point_W.cross(f.force_W);
+    point_jacobian_world(robot, data, s1.link, f.point_W, J);
+    generalized += J.transpose() * f.force_W;
   }
-  r = request();
+  center_of_mass_jacobian(robot, data, J);
+  generalized += J.transpose() * weight;
+  EXPECT_GT(tip_force, 1.0);  // the tip really carries force
+  const double scale = weight.norm();
+  EXPECT_LE(force.norm() / scale, 1e-6);
+  EXPECT_LE(moment.norm() / scale, 1e-6);
+  const Eigen::VectorXd& tau = result.torques[0];
+  EXPECT_LE((tau + generalized.tail(tau.size())).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+// E18's value: the fingertip of hand_ball_rotate's first finger pushing along one cone generator
+// U_0 = (mu x2 + z2) / sqrt(1 + mu^2) only, lambda = 10 N. Against a tip of radius 0 at the same
+// centre, the couple -r z2 x f changes the torque of every revolute joint j above the tip by
+//   -a_j . (-r z2 x f) = r lambda mu / sqrt(1 + mu^2) a_j . y2   (tau + J^T f = 0),
+// computed here by hand from the joint axes; the other fingers' joints do not change.
+TEST(PointContactTorques, TheCoupleTurnsEveryJointAboveTheTip) {
+  const double r = 0.008, lambda = 10.0;
+  Scenario sharp = load_scenario(test::source_path("scenarios/hand_ball_rotate.yaml"));
+  Scenario round = sharp;
+  const PostureRequest request_sharp = test::with_point_tips(sharp, 0.0);
+  const PostureRequest request_round = test::with_point_tips(round, r);
+  PostureNlp nlp_sharp(sharp.scene, request_sharp, sharp.solver, {});
+  PostureNlp nlp_round(round.scene, request_round, round.solver, {});
+  Eigen::VectorXd x(nlp_round.n());
+  nlp_round.starting_point(x.data());
+  const int nq = nlp_round.layout().nq;
+  x.tail(x.size() - nq).setZero();
+  x[nlp_round.layout().forces[0].first_column] = lambda;  // contact 0, generator 0
+  const SurfaceRef s1 = request_round.contacts[0].contact.s1,
+                   s2 = request_round.contacts[0].contact.s2;
+  for (PostureNlp* nlp : {&nlp_sharp, &nlp_round}) {
+    nlp->state().set_x(x.data());
+    nlp->state().ensure_torques();
+  }
+  const Eigen::VectorXd delta =
+      nlp_round.state().tau[size_t(s1.entity)] - nlp_sharp.state().tau[size_t(s1.entity)];
+  const System& system = round.scene.system;
+  const Entity& ball = system.entity(s2.entity);
+  ModelData ball_data(ball);
+  forward_kinematics(ball, x.segment(system.offset(s2.entity), ball.nq()), ball_data);
+  const Surface& face = round.scene.surfaces.get(s2);
+  const Eigen::Vector3d y2 = ball_data.T_WL[face.link].linear() * face.T_LS.linear().col(1);
+  const Entity& hand = system.entity(s1.entity);
+  ModelData data(hand);
+  forward_kinematics(hand, x.segment(system.offset(s1.entity), hand.nq()), data);
+  const Model& model = *hand.model;
+  const double mu = round.solver.friction;
+  Eigen::VectorXd expected = Eigen::VectorXd::Zero(model.num_dofs());
+  for (int l = round.scene.surfaces.get(s1).link; l > 0; l = model.links[l].parent_link) {
+    const Joint& joint = model.joints[model.links[l].parent_joint];
+    if (joint.type == JointType::Revolute || joint.type == JointType::Continuous)
+      expected[joint.dof] += joint.multiplier * r * lambda * mu / std::sqrt(1.0 + mu * mu) *
+                             data.axis_W[model.links[l].parent_joint].dot(y2);
+  }
+  EXPECT_GT(expected.cwiseAbs().maxCoeff(), 1e-3);
+  EXPECT_LE((delta - expected).cwiseAbs().maxCoeff(), 1e-12)
+      << delta.transpose() << "\n vs\n " << expected.transpose();
+}
+
+TEST_F(PointContactGeometry, APointSurfaceIsOnlyS1) {
+  PostureRequest r = request();
   std::swap(r.contacts[2].contact.s1, r.contacts[2].contact.s2);
   try {
     PostureSolver(*scene_, SolverOptions{}).validate_request(r);
