@@ -191,6 +191,19 @@ TEST_F(Derivatives, LoadedPointContactInEquilibrium) {
   check(p);
 }
 
+// A bilateral point contact (free force in R^3, its couple -r z2 x f still turning with s2): the
+// right tip gripping the robot's own left thigh.
+TEST_F(Derivatives, BilateralPointContact) {
+  const Scene s = test::humanoid_scene_with_tips("wall");
+  Program p{"bilateral point", {}, false, &s};
+  ContactTask grip = test::task(s, "robot/r_tip", "robot/l_thigh");
+  grip.contact.bilateral = true;
+  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"),
+                        test::task(s, "robot/r_sole", "env/floor"), grip};
+  p.request.q_init = test::standing_configuration(s);
+  check(p);
+}
+
 // Point fingertips holding the ball of hand_ball_rotate.yaml: the ball is an object, so E16-E17
 // hold for it and the offset -r z2 of each load point turns with the ball (s2).
 TEST_F(Derivatives, LoadedPointContactsOnAnObject) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "planner/model/kinematics.h"
+#include "planner/solver/force_balance.h"
 #include "planner/solver/posture_nlp.h"
 #include "planner/solver/posture_solver.h"
 #include "tests/support/lagrangian.h"
@@ -160,6 +161,52 @@ TEST(PointContactEquilibrium, TheForceActsOneRadiusBelowTheCentre) {
   EXPECT_TRUE((moment(nlp_round, g_round) - moment(nlp_sharp, g_sharp)).isApprox(expected, 1e-9))
       << (moment(nlp_round, g_round) - moment(nlp_sharp, g_sharp)).transpose() << " vs "
       << expected.transpose();
+}
+
+// A bilateral tip gripping the robot's own right thigh: free force components, the couple -r z2 x f
+// turning with the thigh.
+TEST_F(PointContactGeometry, BilateralTipHessianMatchesCentralDifferences) {
+  SolverOptions options;
+  options.hessian = HessianMode::Analytic;
+  options.w_torque = 1e-3;
+  PostureRequest r = request();
+  r.contacts[2].loaded = r.contacts[3].loaded = true;
+  r.contacts[2].contact.s2 = test::surface(*scene_, "robot/r_thigh");
+  r.contacts[2].contact.bilateral = true;
+  EXPECT_LE(hessian_error(*scene_, r, options), 1e-6);
+}
+
+// Starting forces (force_balance.h) for point tips holding the ball: they balance the ball with
+// each force at its contact point c - r z2, recomputed here; taken at the centres instead, the
+// same forces leave a moment (the couples).
+TEST(PointContactStartingForces, BalanceTheBallWithTheForcesAtTheContactPoints) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/hand_ball_rotate.yaml"));
+  const PostureRequest r = test::with_point_tips(scenario, 0.008);
+  PostureNlp nlp(scenario.scene, r, scenario.solver, {});
+  Eigen::VectorXd x(nlp.n());
+  nlp.starting_point(x.data());
+  NlpState& state = nlp.state();
+  state.set_x(x.data());
+  ASSERT_TRUE(balance_starting_forces(state, x).balanced);
+  const System& system = scenario.scene.system;
+  const int ball = system.find_entity("ball");
+  const Entity& entity = system.entity(ball);
+  ModelData data(entity);
+  forward_kinematics(entity, x.segment(system.offset(ball), entity.nq()), data);
+  const Eigen::Vector3d weight = entity.model->total_mass * scenario.scene.gravity;
+  Eigen::Vector3d force = weight, at_contact = center_of_mass(entity, data).cross(weight);
+  Eigen::Vector3d at_centre = at_contact;
+  for (size_t t = 0; t < r.contacts.size(); ++t) {
+    const ContactFrames& f = state.frames[t];
+    ASSERT_EQ(r.contacts[t].contact.s2.entity, ball);
+    force -= f.f[0];  // the ball carries s2: it receives -f
+    at_contact -= (f.p[0] - 0.008 * f.z2).cross(f.f[0]);
+    at_centre -= f.p[0].cross(f.f[0]);
+  }
+  const double scale = weight.norm();
+  EXPECT_LE(force.norm() / scale, 1e-8);
+  EXPECT_LE(at_contact.norm() / scale, 1e-8);
+  EXPECT_GT(at_centre.norm() / scale, 1e-4);
 }
 
 INSTANTIATE_TEST_SUITE_P(PointContacts, PointContactHessian, ::testing::Bool(),
