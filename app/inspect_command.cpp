@@ -97,6 +97,13 @@ json describe(const Model& model, EntityKind kind, const std::vector<Surface>& s
   out["links"] = links;
   json surface_list = json::array();
   for (const Surface& s : surfaces) {
+    if (s.is_point()) {  // a sphere at a point of the link: no normal, no polygon
+      surface_list.push_back({{"name", s.name},
+                              {"link", s.link_name},
+                              {"point", vector_json(s.center_L())},
+                              {"radius", s.radius}});
+      continue;
+    }
     json vertices = json::array();
     for (const auto& v : s.vertices_L()) vertices.push_back(vector_json(v));
     surface_list.push_back({{"name", s.name},
@@ -141,11 +148,18 @@ void print_text(const json& d, std::ostream& out) {
       << c["mesh_hulls"] << " mesh convex hulls), " << c["candidate_pairs"]
       << " link pairs checked, " << c["srdf_disabled_pairs"] << " disabled by the SRDF\n";
   out << "surfaces: " << d["surfaces"].size() << "\n";
-  for (const json& s : d["surfaces"])
+  for (const json& s : d["surfaces"]) {
     out << "  " << std::left << std::setw(16) << s["name"].get<std::string>() << " on "
-        << std::setw(20) << s["link"].get<std::string>() << std::right << s["vertices"].size()
-        << " vertices, " << std::setprecision(4) << s["area"].get<double>() << " m^2"
-        << (s.contains("class") ? ", " + s["class"].get<std::string>() : "") << "\n";
+        << std::setw(20) << s["link"].get<std::string>() << std::right;
+    if (s.contains("radius")) {
+      const json& p = s["point"];
+      out << std::setprecision(4) << "point [" << p[0].get<double>() << ", " << p[1].get<double>()
+          << ", " << p[2].get<double>() << "], radius " << s["radius"].get<double>() << " m\n";
+      continue;
+    }
+    out << s["vertices"].size() << " vertices, " << std::setprecision(4) << s["area"].get<double>()
+        << " m^2" << (s.contains("class") ? ", " + s["class"].get<std::string>() : "") << "\n";
+  }
   // Extracted surfaces (--surfaces auto) are new to the reader: their normal and vertices too.
   for (const json& s : d["surfaces"]) {
     if (!s.contains("class")) continue;

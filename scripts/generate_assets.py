@@ -598,7 +598,10 @@ def surfaces_yaml(title, surfaces, generator="scripts/generate_assets.py"):
     for s in surfaces:
         out.append(f"  - name: {s['name']}")
         out.append(f"    link: {s['link']}")
-        if "box_face" in s:
+        if "point" in s:  # a point surface: a sphere of `radius` centred at `point`
+            out.append(f"    point: {yvec(s['point'])}")
+            out.append(f"    radius: {fnum(s['radius'])}")
+        elif "box_face" in s:
             out.append(f"    box_face: \"{s['box_face']}\"")
             out.append(f"    box_index: {s.get('box_index', 0)}")
             if s.get("inset"):
@@ -1071,7 +1074,10 @@ def verify_surfaces(model, surfaces):
     every box_face surface names an existing box."""
     for s in surfaces:
         assert s["link"] in model.links, s
-        if "box_face" in s:
+        if "point" in s:  # a point surface: a sphere of `radius` centred at `point`
+            out.append(f"    point: {yvec(s['point'])}")
+            out.append(f"    radius: {fnum(s['radius'])}")
+        elif "box_face" in s:
             assert s["box_index"] < len(model.links[s["link"]].collision_boxes()), s
             continue
         assert ccw_area(s["vertices"], s["normal"]) > 0, s["name"]

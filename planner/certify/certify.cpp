@@ -123,6 +123,10 @@ class Checker {
       const Eigen::Isometry3d T1 = data_[c.s1.entity].T_WL[s1.link] * s1.T_LS;
       const Eigen::Isometry3d T2 = data_[c.s2.entity].T_WL[s2.link] * s2.T_LS;
       const std::string name = id(c.s1) + " on " + id(c.s2);
+      if (s1.is_point()) {
+        check_point_contact(i, T1.translation(), s1.radius, T2, s2.vertices_S, name);
+        continue;
+      }
       const double angle =
           std::acos(std::clamp(-T1.linear().col(2).dot(T2.linear().col(2)), -1.0, 1.0));
       note("contact normals", "rad", angle, kNormalTol, i, name);
@@ -139,6 +143,32 @@ class Checker {
     }
   }
 
+  // A point contact (a sphere of radius r centred at c_W): the centre r above s2's plane (E9) and,
+  // in s2's plane, inside its polygon (E10-E11); no orientation to check.
+  void check_point_contact(int i, const Eigen::Vector3d& c_W, double radius,
+                           const Eigen::Isometry3d& T2, const std::vector<Eigen::Vector2d>& poly,
+                           const std::string& name) {
+    const Eigen::Vector3d c_S2 = T2.inverse() * c_W;
+    note("contact plane", "m", std::abs(c_S2.z() - radius), kDistanceTol, i,
+         name + ", the centre not one radius from the plane");
+    note("contact polygon", "m", std::max(0.0, distance_outside(poly, c_S2.head<2>())),
+         kDistanceTol, i, name + ", the point");
+  }
+
+  // Where a contact's forces may act, in the world: s1's vertices, or for a point contact the
+  // point one radius below the centre along s2's normal.
+  std::vector<Eigen::Vector3d> force_points(const Contact& c) const {
+    const Surface& s1 = scene_.surfaces.get(c.s1);
+    const Eigen::Isometry3d& T1 = data_[c.s1.entity].T_WL[s1.link];
+    std::vector<Eigen::Vector3d> points;
+    for (const Eigen::Vector3d& v : s1.vertices_L()) points.push_back(T1 * v);
+    if (s1.is_point()) {
+      const Surface& s2 = scene_.surfaces.get(c.s2);
+      points[0] -= s1.radius * (data_[c.s2.entity].T_WL[s2.link].linear() * s2.normal_L());
+    }
+    return points;
+  }
+
   // --- forces: where they act, unilaterality, friction
   void check_forces(int i, const PlanStep& step) {
     for (const VertexForce& f : step.forces) {
@@ -146,13 +176,13 @@ class Checker {
       const std::string name = id(pc.contact.s1) + " on " + id(pc.contact.s2);
       if (!pc.loaded)
         note("force points", "m", 1.0, kDistanceTol, i, name + " carries force but is not loaded");
-      const Surface& s1 = scene_.surfaces.get(pc.contact.s1);
       double nearest = INFINITY;
-      for (const Eigen::Vector3d& v : s1.vertices_L())
-        nearest =
-            std::min(nearest, (data_[pc.contact.s1.entity].T_WL[s1.link] * v - f.point_W).norm());
+      for (const Eigen::Vector3d& p : force_points(pc.contact))
+        nearest = std::min(nearest, (p - f.point_W).norm());
       note("force points", "m", nearest, kDistanceTol, i,
-           name + ": no vertex of s1 at the force's point");
+           name + (scene_.surfaces.get(pc.contact.s1).is_point()
+                       ? ": the force's point is not one radius below the centre"
+                       : ": no vertex of s1 at the force's point"));
       if (pc.contact.bilateral) continue;
       const Surface& s2 = scene_.surfaces.get(pc.contact.s2);
       const Eigen::Vector3d n = data_[pc.contact.s2.entity].T_WL[s2.link].linear() * s2.normal_L();
@@ -164,7 +194,9 @@ class Checker {
     }
   }
 
-  // --- E16-E17 for every floating robot and object
+  // --- E16-E17 for every floating robot and object. Every force is taken at its stated point,
+  // which "force points" checked: for a point contact the point on s2's plane, c - r z2, so its
+  // moment includes the couple -r z2 x f of the force taken at the centre (E17, E18 below).
   void check_equilibrium(int i, const PlanStep& step) {
     for (int e = 0; e < system_.num_entities(); ++e) {
       const Entity& entity = system_.entity(e);

@@ -86,6 +86,7 @@ double Surface::area() const {
 }
 
 Eigen::Vector2d Surface::centroid_S() const {
+  if (is_point()) return Eigen::Vector2d::Zero();
   const int n = static_cast<int>(vertices_S.size());
   Eigen::Vector2d c = Eigen::Vector2d::Zero();
   double a2 = 0.0;
@@ -155,6 +156,29 @@ bool make_surface(const std::string& name, int link, const std::string& link_nam
   for (const auto& v : vertices_L)
     out.vertices_S.emplace_back((v - center).dot(x), (v - center).dot(y));
   if (!check_convex_ccw(out.vertices_S, error)) return false;
+  *surface = std::move(out);
+  return true;
+}
+
+bool make_point_surface(const std::string& name, int link, const std::string& link_name,
+                        const Eigen::Vector3d& p_L, double radius, Surface* surface,
+                        std::string* error) {
+  if (!p_L.allFinite()) {
+    *error = "the point is not finite";
+    return false;
+  }
+  if (!std::isfinite(radius) || radius < 0.0) {
+    *error = "the radius must be a length >= 0 (m), found " + std::to_string(radius);
+    return false;
+  }
+  Surface out;
+  out.name = name;
+  out.link = link;
+  out.link_name = link_name;
+  out.kind = SurfaceKind::Point;
+  out.radius = radius;
+  out.T_LS.translation() = p_L;
+  out.vertices_S = {Eigen::Vector2d::Zero()};
   *surface = std::move(out);
   return true;
 }

@@ -95,8 +95,9 @@ class SurfaceFileReader {
   // named as such. Same message as scenario files (planner/io/scenario.cpp).
   void expect_keys(const YAML::Node& node, const std::string& field,
                    const std::vector<std::string>& keys, const std::string& kind) const {
-    static const std::set<std::string> kAnyKind = {
-        "name", "link", "normal", "vertices", "x_axis", "box_face", "box_index", "inset", "face"};
+    static const std::set<std::string> kAnyKind = {"name",   "link",     "normal",    "vertices",
+                                                   "x_axis", "box_face", "box_index", "inset",
+                                                   "face",   "point",    "radius"};
     for (const auto& item : node) {
       const std::string key = item.first.IsScalar() ? item.first.Scalar() : "?";
       if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
@@ -110,14 +111,14 @@ class SurfaceFileReader {
     }
   }
 
-  // Which of vertices, box_face and face the surface is given by ("" when none).
+  // Which of vertices, box_face, face and point the surface is given by ("" when none).
   std::string kind_of(const YAML::Node& node, const std::string& index_label) const {
     std::string kind;
-    for (const char* k : {"vertices", "box_face", "face"}) {
+    for (const char* k : {"vertices", "box_face", "face", "point"}) {
       if (!node[k]) continue;
       if (!kind.empty())
         fail(node, index_label,
-             "give one of vertices, box_face or face, found " + kind + " and " + k);
+             "give one of vertices, box_face, face or point, found " + kind + " and " + k);
       kind = k;
     }
     return kind;
@@ -131,6 +132,8 @@ class SurfaceFileReader {
                   kind);
     else if (kind == "face")
       expect_keys(node, index_label, {"name", "link", "face", "inset", "x_axis"}, kind);
+    else if (kind == "point")
+      expect_keys(node, index_label, {"name", "link", "point", "radius"}, kind);
     else
       expect_keys(node, index_label, {"name", "link", "normal", "vertices", "x_axis"},
                   kind.empty() ? "" : "vertices");
@@ -145,13 +148,14 @@ class SurfaceFileReader {
            "link \"" + link_name + "\" is not in model \"" + model_.name + "\"");
     if (kind == "box_face") return read_box_face(node, where, name, link);
     if (kind == "face") return read_link_face(node, where, name, link);
+    if (kind == "point") return read_point(node, where, name, link, link_name);
     return read_polygon(node, where, name, link, link_name);
   }
 
   Surface read_polygon(const YAML::Node& node, const std::string& where, const std::string& name,
                        int link, const std::string& link_name) {
     if (!node["vertices"] || !node["vertices"].IsSequence())
-      fail(node, where, "vertices: missing (or give box_face or face)");
+      fail(node, where, "vertices: missing (or give box_face, face or point)");
     std::vector<Eigen::Vector3d> vertices;
     for (size_t i = 0; i < node["vertices"].size(); ++i) {
       const YAML::Node v = node["vertices"][i];
@@ -169,6 +173,23 @@ class SurfaceFileReader {
     if (!make_surface(name, link, link_name, vertices, normal, x_axis ? &*x_axis : nullptr,
                       &surface, &error))
       fail(node["vertices"], where, error);
+    return surface;
+  }
+
+  // A sphere of `radius` at `point` (link frame): a round fingertip (surface.h, point surfaces).
+  Surface read_point(const YAML::Node& node, const std::string& where, const std::string& name,
+                     int link, const std::string& link_name) {
+    const Eigen::Vector3d p_L = read_vector(node, "point", where);
+    if (!node["radius"])
+      fail(node, where, "radius: missing (the radius of the sphere at the point, m; 0 for a tip)");
+    const double radius = read_number(node["radius"], where + ": radius");
+    if (radius < 0.0)
+      fail(node["radius"], where,
+           "radius: expected a length >= 0 (m), found " + node["radius"].Scalar());
+    Surface surface;
+    std::string error;
+    if (!make_point_surface(name, link, link_name, p_L, radius, &surface, &error))
+      fail(node["point"], where, error);
     return surface;
   }
 

@@ -23,10 +23,14 @@
 //                                          # [x, y, z] (link_faces.h)
 //       inset: 0.005                       # optional, as with box_face
 //       x_axis: [1, 0, 0]                  # optional, as with vertices
+//     - name: index_tip
+//       link: index_distal
+//       point: [0, 0, 0.03]                # a sphere's centre, link frame (a round fingertip):
+//       radius: 0.008                      # its radius (m, >= 0); only s1 of a contact
 //
-// Each surface gives exactly one of vertices, box_face and face, and only the keys of its kind:
-// any other key is refused with its line ("surfaces[2].x_axsi: unknown field (expected one of:
-// name, link, normal, vertices, x_axis)").
+// Each surface gives exactly one of vertices, box_face, face and point, and only the keys of its
+// kind: any other key is refused with its line ("surfaces[2].x_axsi: unknown field (expected one
+// of: name, link, normal, vertices, x_axis)").
 //
 // Errors name the file, the line, the surface and the fault, e.g.
 //   "humanoid.surfaces.yaml:12: surface "l_palm": link "l_hand" is not in model "humanoid"".

@@ -223,6 +223,12 @@ class PlanReader {
       if (link < 0)
         fail(f + ".link", "model \"" + scene.system.entity(e).model->name + "\" has no link \"" +
                               link_name + "\"");
+      if (s.contains("kind") && s["kind"] != "polygon") {
+        if (s["kind"] != "point") fail(f + ".kind", "expected \"polygon\" or \"point\"");
+        per_entity[e].push_back(
+            point_surface(s, f, id.substr(entity_name.size() + 1), link, link_name));
+        continue;
+      }
       const json& rotation = member(s, "rotation", f);
       if (!rotation.is_array() || rotation.size() != 3)
         fail(f + ".rotation", "expected a 3x3 array of rows");
@@ -246,6 +252,19 @@ class PlanReader {
     scene.surfaces = SurfaceSet(scene.system.num_entities());
     for (int e = 0; e < scene.system.num_entities(); ++e)
       scene.surfaces.set(e, std::move(per_entity[e]));
+  }
+
+  // A point surface (`"kind": "point"`): a sphere of `radius` at `point` in the link frame.
+  Surface point_surface(const json& s, const std::string& f, const std::string& name, int link,
+                        const std::string& link_name) const {
+    const Eigen::Vector3d point = vector3(member(s, "point", f), f + ".point");
+    const json& radius = member(s, "radius", f);
+    if (!radius.is_number()) fail(f + ".radius", "expected a number (m)");
+    Surface surface;
+    std::string error;
+    if (!make_point_surface(name, link, link_name, point, radius.get<double>(), &surface, &error))
+      fail(f, error);
+    return surface;
   }
 
   SurfaceRef surface_ref(const json& v, const std::string& field, const Scene& scene) const {

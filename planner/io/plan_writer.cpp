@@ -40,6 +40,13 @@ json entity_json(const Scenario& s, int e, const fs::path& base) {
 
 json surface_json(const Scene& scene, SurfaceRef ref) {
   const Surface& s = scene.surfaces.get(ref);
+  if (s.is_point())  // a sphere at a point of the link: no frame, no polygon
+    return {{"id", scene.surfaces.id(scene.system, ref)},
+            {"entity", scene.system.entity(ref.entity).name},
+            {"link", s.link_name},
+            {"kind", "point"},
+            {"point", vec(s.center_L())},
+            {"radius", s.radius}};
   const Eigen::Matrix3d R = s.T_LS.linear();
   json rotation = json::array();
   for (int i = 0; i < 3; ++i) rotation.push_back({R(i, 0), R(i, 1), R(i, 2)});

@@ -427,6 +427,15 @@ class ScenarioReader {
              "\" has: " + (known.empty() ? "no surfaces" : known) + ")");
   }
 
+  // A point surface (a sphere at a point of a link) touches a polygon: it is s1, never s2.
+  static std::string point_as_s2(const Scene& scene, const Contact& c, const Surface& s1) {
+    return "contact " + scene.surfaces.id(scene.system, c.s1) + " - " +
+           scene.surfaces.id(scene.system, c.s2) + ": s2 \"" +
+           scene.surfaces.id(scene.system, c.s2) +
+           "\" is a point surface, which can only be the s1 of a contact (s2 must be a polygon" +
+           (s1.is_point() ? ": two points cannot touch)" : "; swap s1 and s2)");
+  }
+
   std::vector<StanceContact> read_stance(const YAML::Node& node, const std::string& field,
                                          const Scene& scene) const {
     if (!node.IsSequence()) fail(node, field, "expected a list of contacts {s1, s2}");
@@ -452,6 +461,7 @@ class ScenarioReader {
       const Surface& s2 = scene.surfaces.get(sc.contact.s2);
       if (sc.contact.s1.entity == sc.contact.s2.entity && s1.link == s2.link)
         fail(c, f, "s1 and s2 are on the same link \"" + s1.link_name + "\"");
+      if (s2.is_point()) fail(c["s2"], f + ".s2", point_as_s2(scene, sc.contact, s1));
       const auto in = [](const std::vector<SurfaceRef>& l, SurfaceRef r) {
         return std::find(l.begin(), l.end(), r) != l.end();
       };

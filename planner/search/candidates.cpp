@@ -110,7 +110,10 @@ constexpr double kRigidAngleTolerance = 1e-3;  // rad
 bool rigidly_incompatible(const Scene& scene, const std::vector<ModelData>& data, const Contact& c,
                           const Stance& stance) {
   const auto b1 = rigid_body(scene, c.s1), b2 = rigid_body(scene, c.s2);
+  // A point contact turns nothing (a sphere on a plane): no rule from it or for it.
+  if (scene.surfaces.get(c.s1).is_point()) return false;
   for (const Contact& k : stance.contacts()) {
+    if (scene.surfaces.get(k.s1).is_point()) continue;
     const auto k1 = rigid_body(scene, k.s1), k2 = rigid_body(scene, k.s2);
     // The normals of one body paired with those of the other, in the same order on both sides.
     SurfaceRef on_b = k.s1, on_c = k.s2;
@@ -157,6 +160,15 @@ bool link_is_static(const Scene& scene, int entity, int link) {
 
 double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
                    SurfaceRef b) {
+  if (scene.surfaces.get(b).is_point() && !scene.surfaces.get(a).is_point())
+    return surface_gap(scene, data, b, a);
+  if (scene.surfaces.get(a).is_point()) {  // a sphere: its centre's distance less its radius
+    const Surface& sb = scene.surfaces.get(b);
+    const Eigen::Vector3d nb = data[b.entity].T_WL[sb.link].linear() * sb.normal_L();
+    return point_polygon_distance(world_vertices(scene, data, a)[0], world_vertices(scene, data, b),
+                                  nb) -
+           scene.surfaces.get(a).radius;
+  }
   const auto va = world_vertices(scene, data, a), vb = world_vertices(scene, data, b);
   const Surface& sa = scene.surfaces.get(a);
   const Surface& sb = scene.surfaces.get(b);
@@ -193,13 +205,16 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       const Surface& sa = scene.surfaces.get(a);
       const Surface& sb = scene.surfaces.get(b);
       if (a.entity == b.entity && sa.link == sb.link) continue;
+      if (sa.is_point() && sb.is_point()) continue;  // two spheres touch at no plane
       if (a.entity == b.entity && !options.self_contacts) continue;
       if (link_is_static(scene, a.entity, sa.link) && link_is_static(scene, b.entity, sb.link))
         continue;
       Contact c;
-      // s1 is the smaller surface, unless the goal states the pair the other way round.
-      c.s1 = sa.area() <= sb.area() ? a : b;
-      c.s2 = sa.area() <= sb.area() ? b : a;
+      // s1 is the smaller surface (a point always: area 0, and s1 only), unless the goal states
+      // the pair the other way round.
+      const bool a_first = sa.is_point() || (!sb.is_point() && sa.area() <= sb.area());
+      c.s1 = a_first ? a : b;
+      c.s2 = a_first ? b : a;
       const int in_goal = goal.find(c);
       Contact reversed = c;
       std::swap(reversed.s1, reversed.s2);

@@ -49,7 +49,10 @@ FailureMemo::Relation FailureMemo::relation(const Scene& scene, const std::vecto
   Relation r;
   r.height = T_S2S1.translation().z();
   r.outside = outside_polygon(scene.surfaces.get(c.s2).vertices_S, T_S2S1.translation().head<2>());
-  r.tilt = std::acos(std::clamp(-T_S2S1.linear()(2, 2), -1.0, 1.0));
+  // A point surface has no normal: its tilt is 0.
+  r.tilt = scene.surfaces.get(c.s1).is_point()
+               ? 0.0
+               : std::acos(std::clamp(-T_S2S1.linear()(2, 2), -1.0, 1.0));
   return r;
 }
 

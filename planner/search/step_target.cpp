@@ -30,6 +30,13 @@ Placement along(const Placement& from, const Placement& to, double s) {
 }  // namespace
 
 std::vector<Eigen::Vector2d> footprint_S2(const Surface& s1, const Placement& placement) {
+  if (s1.is_point()) {  // a sphere: the square of half-side r (>= 1 mm) around its contact point
+    const double h = std::max(s1.radius, 1e-3);
+    return {{placement.x - h, placement.y - h},
+            {placement.x + h, placement.y - h},
+            {placement.x + h, placement.y + h},
+            {placement.x - h, placement.y + h}};
+  }
   // s1's x axis lies at theta from s2's; its normal opposes s2's, so its y axis is its x axis
   // turned by -90 deg in s2's plane (the footprint is mirrored), and the order of its vertices
   // reverses to stay counter-clockwise about s2's normal.

@@ -19,7 +19,8 @@ namespace stanceplan {
 // the solver: pulling it back shortens ordinary steps.)
 inline constexpr double kStepTargetClearance = 0.02;
 
-// s1's polygon on s2's plane, in s2's frame, with s1 at `placement` (s1's normal opposes s2's).
+// s1's polygon on s2's plane, in s2's frame, with s1 at `placement` (s1's normal opposes s2's);
+// a point surface's is the square of half-side r (at least 1 mm) around its contact point.
 std::vector<Eigen::Vector2d> footprint_S2(const Surface& s1, const Placement& placement);
 
 // Separation of two convex polygons along the best separating axis (SAT): > 0 apart (a lower bound

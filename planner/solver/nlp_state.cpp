@@ -28,6 +28,7 @@ ContactConstants make_constants(const Scene& scene, const ContactTask& task,
   c.z2_L = s2.T_LS.linear().col(2);
   c.v1_L = s1.vertices_L();
   c.v2_S = s2.vertices_S;
+  c.radius = s1.radius;
   if (!task.contact.bilateral) {
     // E5: K unit generators on the cone of half-angle atan(mu) around s2's normal, which points
     // from l2 towards l1 (the force l2 exerts on l1 pushes along it).
@@ -212,8 +213,7 @@ void NlpState::add_force_term(int task, int vertex, const Eigen::Vector3d& c, Ro
 }
 
 void NlpState::add_load(int entity, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f,
-                        double sign, int task, int vertex,
-                        const Eigen::Ref<const Eigen::MatrixXd>& Jp) {
+                        double sign, int task, int vertex) {
   const Entity& E = scene.system.entity(entity);
   const int ndof = E.model->num_dofs();
   auto dp = dtau_dp_.topRows(ndof);
@@ -225,19 +225,25 @@ void NlpState::add_load(int entity, int link, const Eigen::Vector3d& p, const Ei
   }
   add_point_load_torque(E, data[entity], link, p, sign * f, tau[entity], dtau_dq_[entity], dp, df);
   Eigen::MatrixXd& D = dtau_dx[entity];
-  // Chain rule through the load point (a vertex of s1), over the
-  // columns that move the point only ...
-  const int point_entity = constants[task].e1;
-  const int point_link = constants[task].l1;
-  const int offset = scene.system.offset(point_entity);
-  for (int c : link_columns_[point_entity][point_link])
-    for (int d : rows) D(d, offset + c) += dp.row(d).dot(Jp.col(c));
+  const ContactConstants& c = constants[task];
+  const ContactFrames& fr = frames[task];
+  // Chain rule through the load point p = s1's vertex - r z2, over the columns that move it only:
+  // the vertex moves with l1, the point contact's offset -r z2 with l2 ...
+  const int offset1 = scene.system.offset(c.e1);
+  for (int col : link_columns_[c.e1][c.l1])
+    for (int d : rows) D(d, offset1 + col) += dp.row(d).dot(fr.J_p[vertex].col(col));
+  if (c.radius > 0.0) {
+    const int offset2 = scene.system.offset(c.e2);
+    for (int col : link_columns_[c.e2][c.l2])
+      for (int d : rows) D(d, offset2 + col) -= c.radius * dp.row(d).dot(fr.J_z2.col(col));
+  }
   // ... and through the force.
   for (int d : rows) add_force_term(task, vertex, sign * df.row(d).transpose(), D.row(d));
 }
 
 // Calls visit(entity, link, point, force, sign, task, vertex) for every contact load a robot
-// receives: +f on s1's entity, -f on s2's entity, both at s1's vertex (E18).
+// receives: +f on s1's entity, -f on s2's entity, both at s1's vertex (E18). A point contact's
+// load point is its centre less r z2 (the couple -r z2 x f of the force taken at the centre).
 template <class LoadVisitor>
 void NlpState::for_each_load(LoadVisitor visit) {
   const System& system = scene.system;
@@ -246,10 +252,11 @@ void NlpState::for_each_load(LoadVisitor visit) {
     const ContactConstants& c = constants[t];
     const ContactFrames& fr = frames[t];
     for (size_t j = 0; j < fr.p.size(); ++j) {
+      const Eigen::Vector3d p = fr.p[j] - c.radius * fr.z2;
       if (system.entity(c.e1).model->num_dofs() > 0)
-        visit(c.e1, c.l1, fr.p[j], fr.f[j], 1.0, int(t), int(j));
+        visit(c.e1, c.l1, p, fr.f[j], 1.0, int(t), int(j));
       if (system.entity(c.e2).model->num_dofs() > 0)
-        visit(c.e2, c.l2, fr.p[j], fr.f[j], -1.0, int(t), int(j));
+        visit(c.e2, c.l2, p, fr.f[j], -1.0, int(t), int(j));
     }
   }
 }
@@ -280,9 +287,8 @@ void NlpState::ensure_torques() {
       add_gravity_torques(system.entity(e), data[e], scene.gravity, tau[e], dtau_dq_[e]);
   }
   for_each_load([&](int e, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f,
-                    double sign, int task, int vertex) {
-    add_load(e, link, p, f, sign, task, vertex, frames[task].J_p[vertex]);
-  });
+                    double sign, int task,
+                    int vertex) { add_load(e, link, p, f, sign, task, vertex); });
   for (int e = 0; e < system.num_entities(); ++e)
     if (dtau_dq_[e].size() > 0)
       dtau_dx[e].middleCols(system.offset(e), system.entity(e).nq()) += dtau_dq_[e];

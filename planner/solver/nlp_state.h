@@ -23,6 +23,9 @@ struct ContactConstants {
   std::vector<Eigen::Vector3d> v1_L;       // s1's vertices in l1's frame
   std::vector<Eigen::Vector2d> v2_S;       // s2's polygon in s2's plane
   std::vector<Eigen::Vector3d> U_L2;       // friction cone generators in l2's frame (E5)
+  // s1's radius when it is a point surface (a sphere at its one vertex, surface.h), else 0: the
+  // force then acts at p - r z2, one radius below the centre p along s2's normal.
+  double radius = 0.0;
 };
 
 // World quantities of one contact at the current iterate; Jacobians are over the configuration
@@ -82,7 +85,7 @@ class NlpState {
 
  private:
   void add_load(int entity, int link, const Eigen::Vector3d& p, const Eigen::Vector3d& f,
-                double sign, int task, int vertex, const Eigen::Ref<const Eigen::MatrixXd>& J_p);
+                double sign, int task, int vertex);
 
   template <class LoadVisitor>
   void for_each_load(LoadVisitor visit);

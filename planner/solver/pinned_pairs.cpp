@@ -31,7 +31,8 @@ std::vector<int> pinning_contact(const Scene& scene, const PostureRequest& reque
     if (!model.links()[i].moves) by[i] = -1;
   for (size_t t = 0; t < request.contacts.size(); ++t) {
     const ContactTask& task = request.contacts[t];
-    if (!task.placement) continue;
+    // A point contact pins nothing: the sphere may turn about its centre at any placement.
+    if (!task.placement || scene.surfaces.get(task.contact.s1).is_point()) continue;
     const int a = collision_link_of(scene, task.contact.s1);
     const int b = collision_link_of(scene, task.contact.s2);
     if (a < 0 || b < 0) continue;

@@ -162,11 +162,15 @@ void record_physics(PostureNlp& nlp, const PostureRequest& request, PostureResul
   for (size_t t = 0; t < request.contacts.size(); ++t) {
     const ContactFrames& f = state.frames[t];
     const Eigen::Vector3d d = f.O1 - f.O2;
+    // A point surface has no orientation in s2's plane: its theta is 0 (surface.h).
+    const bool point = state.scene.surfaces.get(request.contacts[t].contact.s1).is_point();
     result.placements.push_back(
-        {d.dot(f.x2), d.dot(f.y2), std::atan2(f.x1.dot(f.y2), f.x1.dot(f.x2))});
+        {d.dot(f.x2), d.dot(f.y2), point ? 0.0 : std::atan2(f.x1.dot(f.y2), f.x1.dot(f.x2))});
     if (nlp.layout().force_block_of_task[t] < 0) continue;
+    // Where each force acts: s1's vertex, or for a point contact one radius below the centre, on
+    // s2's plane (E17-E18 take it there; plan files and certify read this point).
     for (size_t j = 0; j < f.p.size(); ++j)
-      result.forces.push_back({int(t), int(j), f.p[j], f.f[j]});
+      result.forces.push_back({int(t), int(j), f.p[j] - state.constants[t].radius * f.z2, f.f[j]});
   }
   result.torques = state.tau;
 }
@@ -425,6 +429,11 @@ void PostureSolver::validate(const PostureRequest& request) const {
       throw std::invalid_argument("contact " + scene_.surfaces.id(system, task.contact.s1) + " - " +
                                   scene_.surfaces.id(system, task.contact.s2) +
                                   " joins two surfaces of one link");
+    // Point surfaces (surface.h) are s1 only: the sphere touches s2's plane.
+    if (s2.is_point())
+      throw std::invalid_argument("contact " + scene_.surfaces.id(system, task.contact.s1) + " - " +
+                                  scene_.surfaces.id(system, task.contact.s2) +
+                                  ": a point surface can only be s1");
   }
 }
 
@@ -607,7 +616,8 @@ Placement measure_placement(const Scene& scene, const Contact& contact, const Ei
   const Eigen::Vector3d d = T1.translation() - T2.translation();
   const Eigen::Vector3d x1 = T1.linear().col(0);
   return {d.dot(T2.linear().col(0)), d.dot(T2.linear().col(1)),
-          std::atan2(x1.dot(T2.linear().col(1)), x1.dot(T2.linear().col(0)))};
+          s1.is_point() ? 0.0  // a point has no orientation in s2's plane
+                        : std::atan2(x1.dot(T2.linear().col(1)), x1.dot(T2.linear().col(0)))};
 }
 
 }  // namespace stanceplan

@@ -36,6 +36,51 @@ Eigen::Vector3d angular_velocity_jacobian(const Entity& entity, const ModelData&
   return omega;
 }
 
+// H += d2(Omega . c)/dq2 with c held: Omega = sum_j m_j w_j a_j, each axis a_j a vector fixed to
+// its joint's child link.
+void add_angular_velocity_curvature(const Entity& entity, const ModelData& data, int link,
+                                    const Eigen::Ref<const Eigen::VectorXd>& w,
+                                    const Eigen::Vector3d& c, Eigen::Ref<Eigen::MatrixXd> H) {
+  const Model& model = *entity.model;
+  for (int l = link; l > 0; l = model.links[l].parent_link) {
+    const int j = model.links[l].parent_joint;
+    const Joint& joint = model.joints[j];
+    const double scale = joint.multiplier * w[joint.dof];
+    if (joint.movable() && is_rotational(joint.type) && scale != 0.0)
+      add_vector_hessian(entity, data, l, data.axis_W[j], c, scale, H);
+  }
+}
+
+// A point contact's couple (E18 with the couple of E17): its load F = sign f acts at p + a,
+// a = -r z2 turning with l2, which is F at the centre p (add_load) plus the couple a x F. Weighted
+// by w its torques are -Omega . (a x F) = a^T [Omega]x F, Omega the chain's angular velocity under
+// w: a trilinear product (Omega on q_e, a on q_e2, F on lambda and q_e2) whose Hessian is each
+// factor's curvature contracted with the other two plus the products of first derivatives.
+void add_couple_load(NlpState& state, int e, int link, int task, int vertex, double sign,
+                     Eigen::Ref<Eigen::MatrixXd> H) {
+  const System& system = state.scene.system;
+  const Entity& entity = system.entity(e);
+  const ContactConstants& k = state.constants[task];
+  const ContactFrames& fr = state.frames[task];
+  const Eigen::Vector3d a = -k.radius * fr.z2;
+  const Eigen::Vector3d F = sign * fr.f[vertex];
+  const int nq = entity.nq(), offset = system.offset(e);
+  auto J_omega = state.hessian_scratch[1].leftCols(nq);
+  const Eigen::Vector3d omega =
+      angular_velocity_jacobian(entity, state.data[e], link, state.torque_weights[e], J_omega);
+  // Omega's own curvature, a and F held.
+  add_angular_velocity_curvature(entity, state.data[e], link, state.torque_weights[e], -a.cross(F),
+                                 H.block(offset, offset, nq, nq));
+  // a's and F's, Omega held: a^T M f with M = sign [Omega]x (J_a = -r J_z2).
+  const Eigen::Matrix3d M = sign * cross_matrix(omega);
+  add_vector_curvature(state, k.e2, k.l2, a, M * fr.f[vertex], H);
+  add_force_curvature(state, task, vertex, M.transpose() * a, H);
+  add_force_cross_curvature(state, k.e2, fr.J_z2, task, vertex, -k.radius * M, H);
+  // Omega's first derivatives with a's (Omega^T [F]x a) and with F's (-Omega^T [a]x F).
+  add_cross_curvature(state, e, J_omega, k.e2, fr.J_z2, -k.radius * cross_matrix(F), H);
+  add_force_cross_curvature(state, e, J_omega, task, vertex, -sign * cross_matrix(a), H);
+}
+
 // One load: the point p (s1's vertex, moving with e1/l1) pushes with F = sign f_j on the chain of
 // link `link` of entity e; its term is -F . v(q_e, p). When the chain is s1's own link, p is fixed
 // to it (the point velocity of kinematics_hessian.h). Otherwise (the load on s2's entity) p moves
@@ -76,6 +121,7 @@ void add_load(NlpState& state, int e, int link, int task, int vertex, double sig
   // F's curvature contracted with -v, and the products of F's and v's first derivatives.
   add_force_curvature(state, task, vertex, -sign * v, H);
   add_force_cross_curvature(state, e, J_v, task, vertex, -sign * Eigen::Matrix3d::Identity(), H);
+  if (k.radius > 0.0) add_couple_load(state, e, link, task, vertex, sign, H);
 }
 
 }  // namespace

@@ -12,17 +12,44 @@ namespace {
 constexpr double kDecalLift = 0.002;       // contact patches float this far off the surface
 constexpr double kGroundTolerance = 0.01;  // a contact point this close to the ground is on it
 
+constexpr int kPointDiscSides = 24;
+constexpr double kPointDiscMinRadius = 0.004;  // m: a sharp tip's disc stays visible
+
 struct WorldPolygon {
   std::vector<Eigen::Vector3d> vertices;
-  Eigen::Vector3d normal;  // outward normal of s1 (points into s2)
+  Eigen::Vector3d normal;               // outward normal of s1 (points into s2)
+  std::vector<Eigen::Vector3d> points;  // where the forces act: the vertices, or a point's one
 };
+
+// A point surface (a sphere of radius r at c) touches s2's plane at c - r z2: drawn as a disc of
+// radius r (at least kPointDiscMinRadius) there, facing into s2 like a polygon s1.
+WorldPolygon point_disc(const Scene& scene, const SystemPose& pose, const Contact& contact) {
+  const Surface& s1 = scene.surfaces.get(contact.s1);
+  const Surface& s2 = scene.surfaces.get(contact.s2);
+  const Eigen::Vector3d c = pose.T_WL(contact.s1.entity, s1.link) * s1.center_L();
+  const Eigen::Isometry3d T_WS2 = pose.T_WL(contact.s2.entity, s2.link) * s2.T_LS;
+  const Eigen::Vector3d z2 = T_WS2.linear().col(2);
+  WorldPolygon out;
+  out.normal = -z2;
+  out.points = {c - s1.radius * z2};
+  // (u, v, -z2) right-handed: increasing angles turn counter-clockwise about s1's normal -z2.
+  const Eigen::Vector3d u = T_WS2.linear().col(0), v = out.normal.cross(u);
+  const double radius = std::max(s1.radius, kPointDiscMinRadius);
+  for (int k = 0; k < kPointDiscSides; ++k) {
+    const double angle = 2.0 * M_PI * k / kPointDiscSides;
+    out.vertices.push_back(out.points[0] + radius * (std::cos(angle) * u + std::sin(angle) * v));
+  }
+  return out;
+}
 
 WorldPolygon s1_polygon(const Scene& scene, const SystemPose& pose, const Contact& contact) {
   const Surface& s1 = scene.surfaces.get(contact.s1);
+  if (s1.is_point()) return point_disc(scene, pose, contact);
   const Eigen::Isometry3d& T_WL = pose.T_WL(contact.s1.entity, s1.link);
   WorldPolygon out;
   for (const Eigen::Vector3d& p_L : s1.vertices_L()) out.vertices.push_back(T_WL * p_L);
   out.normal = T_WL.linear() * s1.normal_L();
+  out.points = out.vertices;
   return out;
 }
 
@@ -166,7 +193,7 @@ void add_contact_overlays(const Scene& scene, const SystemPose& pose,
     if (style.contacts)
       add_patch(polygon, pc.loaded ? style.loaded_contact : style.unloaded_contact, style, list);
     if (!pc.loaded) continue;
-    for (const Eigen::Vector3d& p : polygon.vertices) {
+    for (const Eigen::Vector3d& p : polygon.points) {
       if (style.friction_cones && !pc.contact.bilateral)
         add_friction_cone(p, -polygon.normal, style, list);
       // A vertex on the ground, of a surface facing down onto it, supports the robot.

@@ -29,11 +29,13 @@ class QuaternionNormBlock : public ConstraintBlock {
 // E8-E13 for one contact: normals opposed (2 rows + a branch inequality), s1's origin on s2's
 // plane, and for a fixed placement the position (x_c, y_c) and orientation theta_c (1 row + a
 // branch inequality). A free placement (case 1) keeps only the first three rows and the branch.
+// A point contact (s1 a point surface) has E9 with the sphere's centre r above s2's plane and,
+// fixed, E10-E11: 1 or 3 rows.
 class ContactGeometryBlock : public ConstraintBlock {
  public:
   int contact() const override { return task_; }
   ContactGeometryBlock(const NlpState& state, int task);
-  int rows() const override { return fixed_ ? 8 : 4; }
+  int rows() const override { return point_ ? (fixed_ ? 3 : 1) : (fixed_ ? 8 : 4); }
   void bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const override;
   void row_columns(int r, std::vector<int>* columns) const override;
   void evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) const override;
@@ -42,8 +44,14 @@ class ContactGeometryBlock : public ConstraintBlock {
                    Eigen::Ref<Eigen::MatrixXd> H) const override;
 
  private:
+  int row_e9() const;  // the local rows of E9, E10 and E11
+  int row_e10() const;
+  int row_e11() const;
+
   int task_;
   bool fixed_;
+  bool point_ = false;
+  double radius_ = 0.0;
   Placement placement_;
   std::vector<int> columns_;
 };

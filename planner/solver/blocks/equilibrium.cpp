@@ -4,6 +4,16 @@
 #include "planner/solver/blocks/blocks.h"
 
 namespace stanceplan {
+namespace {
+
+// A point contact's force acts at c - r z2, r z2 below the sphere's centre c, which is its vertex
+// p (surface.h): the moment of f is (p - r z2) x f, the vertex's plus the couple -r z2 x f. The
+// offset -r z2 turns with s2's link. 0 for a polygon contact.
+double point_radius(const NlpState& state, int task) {
+  return state.constants[task].radius;
+}
+
+}  // namespace
 
 EquilibriumBlock::EquilibriumBlock(const NlpState& state, int entity)
     : ConstraintBlock("equilibrium"), entity_(entity) {
@@ -41,8 +51,9 @@ void EquilibriumBlock::evaluate(NlpState& state, Eigen::Ref<Eigen::VectorXd> g) 
   Eigen::Vector3d moment = state.com[entity_].cross(weight);  // E17, about the world origin
   for (const Received& r : received_) {
     const ContactFrames& f = state.frames[r.task];
+    const Eigen::Vector3d p = f.p[r.vertex] - point_radius(state, r.task) * f.z2;
     force += r.sign * f.f[r.vertex];
-    moment += r.sign * f.p[r.vertex].cross(f.f[r.vertex]);
+    moment += r.sign * p.cross(f.f[r.vertex]);
   }
   g.head<3>() = scale_ * force;
   g.tail<3>() = scale_ * moment;
@@ -61,15 +72,20 @@ void EquilibriumBlock::jacobian(NlpState& state, Eigen::Ref<Eigen::MatrixXd> J) 
       const double w = r.sign * scale_;
       state.add_force_term(r.task, r.vertex, w * e, J.row(i));
       // (p x f)_i = p . (f x e_i) = f . (e_i x p)
-      const int e1 = state.constants[r.task].e1;
+      const int e1 = state.constants[r.task].e1, e2 = state.constants[r.task].e2;
+      const double radius = point_radius(state, r.task);
       state.add_entity_term(e1, f.J_p[r.vertex], w * f.f[r.vertex].cross(e), J.row(3 + i));
-      state.add_force_term(r.task, r.vertex, w * e.cross(f.p[r.vertex]), J.row(3 + i));
+      if (radius > 0.0)  // the point contact's offset -r z2 (E17 adapted)
+        state.add_entity_term(e2, f.J_z2, -radius * w * f.f[r.vertex].cross(e), J.row(3 + i));
+      const Eigen::Vector3d p = f.p[r.vertex] - radius * f.z2;
+      state.add_force_term(r.task, r.vertex, w * e.cross(p), J.row(3 + i));
     }
   }
 }
 
 // y_f . (sum s f_j) + y_m . (sum s p_j x f_j + C x m g), all times 1 / (m |g|):
-// y_m . (p x f) = p^T M f with M = -[y_m]x.
+// y_m . (p x f) = p^T M f with M = -[y_m]x. A point contact's load point is p - r z2: its offset
+// adds a^T M f with a = -r z2 on s2's link (its own curvature and its cross terms with f).
 void EquilibriumBlock::add_hessian(NlpState& state, const Eigen::Ref<const Eigen::VectorXd>& y,
                                    Eigen::Ref<Eigen::MatrixXd> H) const {
   state.ensure_jacobians();
@@ -80,11 +96,17 @@ void EquilibriumBlock::add_hessian(NlpState& state, const Eigen::Ref<const Eigen
   for (const Received& r : received_) {
     const ContactFrames& f = state.frames[r.task];
     const ContactConstants& k = state.constants[r.task];
+    const double radius = point_radius(state, r.task);
     const Eigen::Vector3d& p = f.p[r.vertex];
     const Eigen::Matrix3d M = -r.sign * cross_matrix(y_m);
-    add_force_curvature(state, r.task, r.vertex, r.sign * y_f + M.transpose() * p, H);
+    add_force_curvature(state, r.task, r.vertex, r.sign * y_f + M.transpose() * (p - radius * f.z2),
+                        H);
     add_point_curvature(state, k.e1, k.l1, p, M * f.f[r.vertex], H);
     add_force_cross_curvature(state, k.e1, f.J_p[r.vertex], r.task, r.vertex, M, H);
+    if (radius > 0.0) {
+      add_vector_curvature(state, k.e2, k.l2, -radius * f.z2, M * f.f[r.vertex], H);
+      add_force_cross_curvature(state, k.e2, f.J_z2, r.task, r.vertex, -radius * M, H);
+    }
   }
 }
 

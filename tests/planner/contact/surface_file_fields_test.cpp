@@ -64,8 +64,8 @@ TEST_F(SurfaceFileFields, UnknownKeysAreRefusedWithTheirLine) {
                 "name, link, face, inset, x_axis)");
   EXPECT_EQ(error_of("  - {name: a, link: base, box_face: +z, face: +z}\n"),
             path_ +
-                ":3: surfaces[0]: give one of vertices, box_face or face, found box_face "
-                "and face");
+                ":3: surfaces[0]: give one of vertices, box_face, face or point, found "
+                "box_face and face");
   std::ofstream(path_) << "format: stanceplan/surfaces@1\nsurface:\n  - {name: a}\n";
   try {
     load_surface_file(path_, model_);

@@ -169,7 +169,7 @@ TEST_F(SurfaceFile, WrongFormatMissingFieldsAndBadNumbers) {
   EXPECT_EQ(error_of("format: other\nsurfaces: []\n"),
             path_ + ":1: format: expected \"stanceplan/surfaces@1\", found \"other\"");
   EXPECT_THAT(error_of("format: stanceplan/surfaces@1\nsurfaces:\n  - name: a\n    link: base\n"),
-              HasSubstr(":3: surface \"a\": vertices: missing (or give box_face or face)"));
+              HasSubstr(":3: surface \"a\": vertices: missing (or give box_face, face or point)"));
   EXPECT_THAT(error_of("format: stanceplan/surfaces@1\nsurfaces:\n  - name: a\n    link: base\n"
                        "    normal: [0, 0, one]\n    vertices: [[0,0,0],[1,0,0],[0,1,0]]\n"),
               HasSubstr(":5: surface \"a\": normal: expected a number, found \"one\""));

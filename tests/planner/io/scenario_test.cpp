@@ -181,5 +181,37 @@ TEST_F(ScenarioFaults, ASurfaceTwiceInAStanceIsRejected) {
                                 "in a contact of this stance");
 }
 
+// A point surface (a sphere at a point of a link) touches a polygon: it is the s1 of a contact and
+// never its s2; the contact is named, and so is the fix.
+TEST_F(ScenarioFaults, APointSurfaceIsOnlyEverS1) {
+  const std::string humanoid = test::source_path("assets/robots/humanoid/humanoid.surfaces.yaml");
+  const std::string with_tip = (test::temp_dir("scenarios") / "humanoid_with_tip.yaml").string();
+  {
+    std::ifstream in(humanoid);
+    std::ofstream out(with_tip);
+    out << in.rdbuf() << "  - {name: l_tip, link: l_hand, point: [0, 0, -0.15], radius: 0.02}\n"
+        << "  - {name: r_tip, link: r_hand, point: [0, 0, -0.15], radius: 0.02}\n";
+  }
+  std::string text = header() + stances();
+  text.replace(text.find(humanoid), humanoid.size(), with_tip);
+  const size_t goal = text.find("  goal:\n");
+  EXPECT_EQ(load_scenario(write(text.substr(0, goal) + "    - {s1: robot/l_tip, s2: env/floor}\n" +
+                                text.substr(goal)))
+                .initial_stance.size(),
+            3u);
+  EXPECT_EQ(error_of(text.substr(0, goal) + "    - {s1: env/floor, s2: robot/l_tip}\n" +
+                     text.substr(goal)),
+            path_ +
+                ":18: stances.initial[2].s2: contact env/floor - robot/l_tip: s2 "
+                "\"robot/l_tip\" is a point surface, which can only be the s1 of a contact (s2 "
+                "must be a polygon; swap s1 and s2)");
+  EXPECT_EQ(error_of(text.substr(0, goal) + "    - {s1: robot/r_tip, s2: robot/l_tip}\n" +
+                     text.substr(goal)),
+            path_ +
+                ":18: stances.initial[2].s2: contact robot/r_tip - robot/l_tip: s2 "
+                "\"robot/l_tip\" is a point surface, which can only be the s1 of a contact (s2 "
+                "must be a polygon: two points cannot touch)");
+}
+
 }  // namespace
 }  // namespace stanceplan

@@ -5,6 +5,7 @@
 #include "planner/model/kinematics.h"
 #include "planner/search/candidates.h"
 #include "tests/support/paths.h"
+#include "tests/support/point_tips.h"
 #include "tests/support/scenes.h"
 
 namespace stanceplan {
@@ -54,6 +55,34 @@ TEST(Candidates, PruningRulesAndOptions) {
   options.contact_reach = 0.3;
   EXPECT_FALSE(offers(enumerate_candidates(scene, data, Stance({left}), goal, options), scene,
                       "robot/r_palm", true));
+}
+
+// Point surfaces (the humanoid's round fingertips l_tip, r_tip) are offered with polygons only,
+// always as s1 whatever the polygon's area, never with each other; their reach is the centre's
+// distance to the polygon less the radius.
+TEST(Candidates, APointIsAlwaysS1AndNeverMeetsAPoint) {
+  const Scene scene = test::humanoid_scene_with_tips("wall");
+  const auto data = system_kinematics(scene.system, test::standing_configuration(scene));
+  const Contact left = test::task(scene, "robot/l_sole", "env/floor").contact;
+  const Contact right = test::task(scene, "robot/r_sole", "env/floor").contact;
+  SearchOptions options;
+  options.contact_reach = 2.0;
+  int tips = 0;
+  for (const Candidate& c : enumerate_candidates(scene, data, Stance({left, right}), {}, options)) {
+    const Surface& s1 = scene.surfaces.get(c.contact.s1);
+    const Surface& s2 = scene.surfaces.get(c.contact.s2);
+    EXPECT_FALSE(s2.is_point()) << s1.name << " - " << s2.name;
+    tips += s1.is_point();
+  }
+  EXPECT_EQ(tips, 4);  // each tip with the floor and the wall (no self contacts by default)
+  // The left tip's centre hangs 0.15 m below the hand, well above the floor: in reach of it only
+  // when the reach covers that height less the radius.
+  const SurfaceRef tip = test::surface(scene, "robot/l_tip");
+  const SurfaceRef floor = test::surface(scene, "env/floor");
+  const double height =
+      (data[0].T_WL[scene.surfaces.get(tip).link] * scene.surfaces.get(tip).center_L()).z();
+  EXPECT_NEAR(surface_gap(scene, data, tip, floor), height - 0.02, 1e-9);
+  EXPECT_NEAR(surface_gap(scene, data, floor, tip), height - 0.02, 1e-9);
 }
 
 TEST(Candidates, MinContactsKeepsThatManyContactsOnAFloatingBody) {

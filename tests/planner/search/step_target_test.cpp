@@ -38,6 +38,21 @@ TEST_F(StepTarget, FootprintIsTheSoleOnTheFloor) {
   EXPECT_LT(footprint_separation(sole, sole), 0.0);
 }
 
+// A point surface (a round tip of radius r) has no polygon: its footprint is the square of
+// half-side r around its contact point, whatever theta.
+TEST_F(StepTarget, APointsFootprintIsASquareOfItsRadius) {
+  Surface tip;
+  std::string error;
+  ASSERT_TRUE(
+      make_point_surface("tip", 0, "base", Eigen::Vector3d(0.1, 0.0, 0.0), 0.02, &tip, &error));
+  const auto square = footprint_S2(tip, Placement{1.0, 2.0, 0.7});
+  ASSERT_EQ(square.size(), 4u);
+  EXPECT_TRUE(footprint_contains(square, {1.019, 2.019}));
+  EXPECT_FALSE(footprint_contains(square, {1.021, 2.0}));
+  const auto other = footprint_S2(tip, Placement{1.1, 2.0, 0.0});
+  EXPECT_NEAR(footprint_separation(square, other), 0.1 - 0.04, 1e-12);
+}
+
 TEST_F(StepTarget, SideStepPastTheOtherFootStopsBesideIt) {
   // Right foot lifted at y = -0.17, aimed at y = +0.115: past the left foot (y in [-0.065, 0.065]).
   const Placement now{0.0, -0.17, 0.0}, aim{0.02, 0.115, 0.0};

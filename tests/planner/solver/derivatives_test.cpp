@@ -5,8 +5,11 @@
 #include <random>
 #include <set>
 
+#include "planner/io/scenario.h"
 #include "planner/solver/posture_nlp.h"
 #include "planner/solver/posture_solver.h"
+#include "tests/support/paths.h"
+#include "tests/support/point_tips.h"
 #include "tests/support/scenes.h"
 
 namespace stanceplan {
@@ -16,6 +19,7 @@ struct Program {
   std::string name;
   PostureRequest request;
   bool all_pairs = false;  // put every collision pair in the program (penetrating ones included)
+  const Scene* scene = nullptr;  // nullptr: the humanoid before the wall
 };
 
 class Derivatives : public ::testing::Test {
@@ -33,7 +37,7 @@ class Derivatives : public ::testing::Test {
   }
 
   void check(const Program& program) {
-    const Scene& scene = *scene_;
+    const Scene& scene = program.scene ? *program.scene : *scene_;
     SolverOptions options;
     options.w_torque = 1e-4;
     options.w_force = 1e-3;
@@ -156,6 +160,57 @@ TEST_F(Derivatives, CollisionRowsIncludingPenetratingPairs) {
   q[7 + m.find_dof("l_knee_p")] = 2.3;
   q[7 + m.find_dof("r_shoulder_r")] = -0.4;
   p.request.q_init = q;
+  check(p);
+}
+
+// Point contacts (round fingertips, geometry only): E9 with the centre one radius above s2's plane,
+// free (case 1, with an E25 target) and at a fixed placement (E10-E11).
+TEST_F(Derivatives, PointContactsFreeAndFixed) {
+  const Scene s = test::humanoid_scene_with_tips("wall");
+  Program p{"point", {}, false, &s};
+  ContactTask tip = test::task(s, "robot/l_tip", "env/wall", false);
+  tip.placement_target = Placement{0.1, -0.2, 0.0};
+  ContactTask fixed_tip = test::task(s, "robot/r_tip", "env/floor", false);
+  fixed_tip.placement = Placement{0.3, -0.4, 0.7};
+  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"), tip, fixed_tip};
+  p.request.q_init = test::standing_configuration(s);
+  check(p);
+}
+
+// Loaded point contacts: their force enters E16 and, at c - r z2, E17 and E18 (the couple
+// -r z2 x f turning with s2, on l1's joints and, for the thigh, on l2's).
+TEST_F(Derivatives, LoadedPointContactInEquilibrium) {
+  const Scene s = test::humanoid_scene_with_tips("wall");
+  Program p{"loaded point", {}, false, &s};
+  ContactTask fixed_tip = test::task(s, "robot/l_tip", "env/wall");
+  fixed_tip.placement = Placement{0.1, 0.2, 0.0};
+  // The right tip on the robot's own left thigh: s2 moves, so the offset -r z2 turns with it.
+  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"),
+                        test::task(s, "robot/r_tip", "robot/l_thigh"), fixed_tip};
+  p.request.q_init = test::standing_configuration(s);
+  check(p);
+}
+
+// A bilateral point contact (free force in R^3, its couple -r z2 x f still turning with s2): the
+// right tip gripping the robot's own left thigh.
+TEST_F(Derivatives, BilateralPointContact) {
+  const Scene s = test::humanoid_scene_with_tips("wall");
+  Program p{"bilateral point", {}, false, &s};
+  ContactTask grip = test::task(s, "robot/r_tip", "robot/l_thigh");
+  grip.contact.bilateral = true;
+  p.request.contacts = {test::task(s, "robot/l_sole", "env/floor"),
+                        test::task(s, "robot/r_sole", "env/floor"), grip};
+  p.request.q_init = test::standing_configuration(s);
+  check(p);
+}
+
+// Point fingertips holding the ball of hand_ball_rotate.yaml: the ball is an object, so E16-E17
+// hold for it and the offset -r z2 of each load point turns with the ball (s2).
+TEST_F(Derivatives, LoadedPointContactsOnAnObject) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/hand_ball_rotate.yaml"));
+  Program p{"point tips on the ball", {}, false, &scenario.scene};
+  p.request = test::with_point_tips(scenario);
+  ASSERT_EQ(p.request.contacts.size(), 4u);  // four fingertips
   check(p);
 }
 
