@@ -139,6 +139,8 @@ bool normals_cannot_meet(const Scene& scene, const std::vector<ModelData>& data,
     for (const auto& [x, x_partner] : {std::pair(c.s1, c.s2), std::pair(c.s2, c.s1)})
       for (const auto& [y, y_partner] : {std::pair(k.s1, k.s2), std::pair(k.s2, k.s1)}) {
         if (x.entity != y.entity || rigid_body(scene, x) == rigid_body(scene, y)) continue;
+        // A point contact leaves its normal free (no E8).
+        if (scene.surfaces.get(x).is_point() || scene.surfaces.get(y).is_point()) continue;
         if (rigid_body(scene, x_partner) != rigid_body(scene, y_partner)) continue;
         const double needed =
             angle_between(normal_W(scene, data, x_partner), normal_W(scene, data, y_partner));

@@ -44,7 +44,8 @@ void draw_labels(Image& image, const Camera& camera, const std::vector<SurfaceLa
     Eigen::Vector2d pixel;
     if (!project_to_pixel(camera, image.width, image.height, label.p_W, pixel)) continue;
     Rect r = tag_rect(*font, label.text, px);
-    r.x = static_cast<float>(pixel.x()) - 0.5f * r.w;
+    // A point's name starts beside it (its sphere is a few pixels wide); a polygon's is centred.
+    r.x = static_cast<float>(pixel.x()) - (label.point ? -0.6f * r.h : 0.5f * r.w);
     r.y = static_cast<float>(pixel.y()) - 0.5f * r.h;
     if (r.x < 0 || r.y < 0 || r.x + r.w > image.width || r.y + r.h > image.height) continue;
     if (std::any_of(placed.begin(), placed.end(), [&](const Rect& p) { return p.overlaps(r); }))

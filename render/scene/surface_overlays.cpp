@@ -1,6 +1,9 @@
 #include "render/scene/surface_overlays.h"
 
+#include <algorithm>
 #include <array>
+
+#include "render/scene/mesh_library.h"
 
 namespace stanceplan::render {
 namespace {
@@ -24,9 +27,28 @@ DrawItem patch_item(DrawList& list, MeshData mesh, Color color) {
 }
 
 // One surface: the filled polygon (translucent) and its ring (opaque), lifted along the normal.
+// A point surface (a round fingertip): a sphere of its radius (at least 4 mm, to be seen) at its
+// centre, seen through the link that holds it, labelled there.
+SurfaceLabel add_point(const Surface& surface, const Eigen::Isometry3d& T_WL, const std::string& id,
+                       Color color, DrawList& list) {
+  const Eigen::Vector3d c_W = T_WL * surface.center_L();
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = c_W;
+  DrawItem item;
+  item.mesh = &MeshLibrary::primitive(ShapeType::Sphere);
+  item.T_WM = scaled_transform(T, Eigen::Vector3d::Constant(std::max(surface.radius, 0.004)));
+  item.color = color;
+  item.casts_shadow = false;
+  item.xray = true;  // inside the fingertip it belongs to: drawn faded through it
+  item.frames_view = true;
+  list.items.push_back(item);
+  return {id, c_W, color, true};
+}
+
 SurfaceLabel add_surface(const Surface& surface, const Eigen::Isometry3d& T_WL,
                          const std::string& id, Color color, const RenderStyle& style,
                          DrawList& list) {
+  if (surface.is_point()) return add_point(surface, T_WL, id, color, list);
   const Eigen::Vector3d n_W = T_WL.linear() * surface.normal_L();
   std::vector<Eigen::Vector3f> vertices;
   for (const Eigen::Vector3d& p_L : surface.vertices_L())

@@ -22,6 +22,7 @@ struct SurfaceLabel {
   std::string text;     // "entity/surface"
   Eigen::Vector3d p_W;  // the polygon's centroid in the world, lifted like the patch
   Color color;
+  bool point = false;  // a point surface: the name goes beside it, not over it
 };
 
 // Adds one translucent patch per surface of every entity (in SurfaceSet order, colour i for the
