@@ -55,8 +55,8 @@ void write_guide_strip(const Scenario& scenario, const ComputedGuide& guide,
   }
   const render::PlanView view = plan_view(scenario, plan);
   render::StripOptions strip;
-  strip.title = view.name + "  —  computed guide: " + std::to_string(guide.milestones.size()) +
-                " milestones (panel k: the configuration milestone k aims at)";
+  strip.title =
+      view.name + "  —  computed guide, " + std::to_string(guide.milestones.size()) + " milestones";
   std::vector<std::string> warnings;
   const render::Image image =
       render::render_strip(view, strip, figure_options(view), nullptr, &warnings);

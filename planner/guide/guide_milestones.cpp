@@ -5,22 +5,6 @@
 #include <cmath>
 
 namespace stanceplan {
-namespace {
-
-// Linear in positions and phase, spherical in orientations.
-Eigen::VectorXd between(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double t) {
-  Eigen::VectorXd x = a + t * (b - a);
-  for (int o = 0; o + 7 < int(a.size()); o += 7) {
-    const Eigen::Quaterniond qa(a[o + 3], a[o + 4], a[o + 5], a[o + 6]);
-    const Eigen::Quaterniond qb(b[o + 3], b[o + 4], b[o + 5], b[o + 6]);
-    const Eigen::Quaterniond q = qa.normalized().slerp(t, qb.normalized());
-    x.segment<4>(o + 3) << q.w(), q.x(), q.y(), q.z();
-  }
-  return x;
-}
-
-}  // namespace
-
 std::vector<Eigen::VectorXd> points_along(const GuideSpace& space,
                                           const std::vector<Eigen::VectorXd>& waypoints,
                                           double spacing) {
@@ -34,8 +18,8 @@ std::vector<Eigen::VectorXd> points_along(const GuideSpace& space,
     const double d = at.back() * k / count;
     while (i + 1 < waypoints.size() && at[i] < d) ++i;
     const double length = at[i] - at[i - 1];
-    points.push_back(
-        between(waypoints[i - 1], waypoints[i], length > 0.0 ? (d - at[i - 1]) / length : 1.0));
+    points.push_back(GuideSpace::between(waypoints[i - 1], waypoints[i],
+                                         length > 0.0 ? (d - at[i - 1]) / length : 1.0));
   }
   points.push_back(waypoints.back());
   return points;

@@ -39,6 +39,14 @@ std::string no_path(const PlannedPath& path, GuideValidity& validity, const Guid
         << options.time_limit << " s (clearance " << options.clearance << " m over "
         << validity.num_checked_pairs() << " collision pairs, a support within " << options.reach
         << " m)";
+    // What blocks the straight way, a hint for the user (1 % steps).
+    for (int k = 1; k < 100; ++k) {
+      space.configuration(GuideSpace::between(space.x_start(), space.x_goal(), k / 100.0), q);
+      if (const std::string why = validity.why_invalid(q); !why.empty()) {
+        out << "; the straight way is blocked " << k << " % along: " << why;
+        break;
+      }
+    }
   }
   return out.str();
 }

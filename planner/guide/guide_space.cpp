@@ -50,6 +50,16 @@ void GuideSpace::configuration(const Eigen::VectorXd& x, Eigen::VectorXd& q) con
   }
 }
 
+Eigen::VectorXd GuideSpace::between(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double t) {
+  Eigen::VectorXd x = a + t * (b - a);
+  for (int o = 0; o + 7 < int(a.size()); o += 7) {
+    const Eigen::Quaterniond qa = quaternion(a.segment<4>(o + 3));
+    const Eigen::Quaterniond q = qa.slerp(t, quaternion(b.segment<4>(o + 3)));
+    x.segment<4>(o + 3) << q.w(), q.x(), q.y(), q.z();
+  }
+  return x;
+}
+
 double GuideSpace::travel(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const {
   if (moving_.empty()) return std::abs(b[size() - 1] - a[size() - 1]);
   double d = 0.0;

@@ -25,6 +25,9 @@ class GuideSpace {
   Eigen::VectorXd x_start() const { return point_of(q_start_, 0.0); }
   Eigen::VectorXd x_goal() const { return point_of(q_goal_, 1.0); }
 
+  // The point at t of the straight way from a to b: linear in positions and phase, spherical in
+  // orientations.
+  static Eigen::VectorXd between(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double t);
   // The configuration at x (allocates nothing when q already has System::nq() entries).
   void configuration(const Eigen::VectorXd& x, Eigen::VectorXd& q) const;
   // Base travel from a to b: the largest distance a moving root covers, its turn counted as

@@ -58,7 +58,10 @@ std::vector<PairRule> pair_rules(const Problem& problem, const GuideOptions& opt
   for (size_t p = 0; p < rules.size(); ++p) {
     const CollisionLink& a = model.links()[size_t(model.pairs()[p].a)];
     const CollisionLink& b = model.links()[size_t(model.pairs()[p].b)];
-    if (a.entity == b.entity) continue;
+    if (a.entity == b.entity) {  // self-collision: the joints' straight line is not a motion
+      rules[p] = PairRule::Ignored;
+      continue;
+    }
     for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}})
       if (scene.system.entity(x.entity).kind == EntityKind::FloatingRobot &&
           may_touch(scene, x.entity, x.link, y.entity, y.link, options.contact_pairs))
@@ -78,18 +81,22 @@ GuideValidity::GuideValidity(const Problem& problem, const Eigen::VectorXd& q_st
   if (scene.collision) {
     collision_data_.emplace_back(system, *scene.collision);
     std::vector<PairRule> rules = pair_rules(problem, options_);
+    // A contact's links keep at least their depth at either end, less kTouchDepth (a palm
+    // modelled into its handle); the others are left out when closer than the clearance there.
+    std::vector<double> bound(rules.size(), options_.clearance);
+    for (size_t p = 0; p < rules.size(); ++p)
+      if (rules[p] == PairRule::Touch) bound[p] = -kTouchDepth;
     for (const Eigen::VectorXd* q : {&q_start, &q_goal}) {
       update(*q);
-      for (size_t p = 0; p < rules.size(); ++p)
-        if (rules[p] == PairRule::Clearance &&
-            signed_distance(*scene.collision, collision_data_[0], int(p)).distance <
-                options_.clearance)
-          rules[p] = PairRule::Ignored;
+      for (size_t p = 0; p < rules.size(); ++p) {
+        if (rules[p] == PairRule::Ignored) continue;
+        const double d = signed_distance(*scene.collision, collision_data_[0], int(p)).distance;
+        if (rules[p] == PairRule::Clearance && d < bound[p]) rules[p] = PairRule::Ignored;
+        if (rules[p] == PairRule::Touch) bound[p] = std::min(bound[p], d - kTouchDepth);
+      }
     }
     for (size_t p = 0; p < rules.size(); ++p)
-      if (rules[p] != PairRule::Ignored)
-        checked_pairs_.push_back(
-            {int(p), rules[p] == PairRule::Touch ? -kTouchDepth : options_.clearance});
+      if (rules[p] != PairRule::Ignored) checked_pairs_.push_back({int(p), bound[p]});
   }
   if (scene.gravity.norm() == 0.0) return;
   for (int e = 0; e < system.num_entities(); ++e) {

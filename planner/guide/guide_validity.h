@@ -4,16 +4,19 @@
 // supports; this is that trade-off as a simple rule, in the spirit of RBPRM's reachability
 // condition (the trunk clear of obstacles, a support within reach of a limb):
 //  - the trunk collision-free with a clearance: every candidate collision pair of the scene keeps
-//    GuideOptions::clearance, except the pairs meant to touch: the links of every contact of the
-//    initial and goal stances (a robot standing on the floor touches it); a floating robot's links
-//    that carry a contact-capable surface (its limbs: soles, shanks, hands) with the links of other
-//    entities carrying a surface they may touch (the contact pairs), as RBPRM checks only the trunk
-//    and lets the limbs find their contacts (without this the feet, interpolated rigidly, cannot
-//    pass a stair's riser); and the pairs closer than the clearance at the initial or at the goal
-//    configuration (the task starts or ends there: a thigh on a chair's seat beside its contact).
-//    The links of a contact of the initial or goal stance that is not such a limb (an object on a
-//    platform, a fingertip on a ball) may touch but not sink in by more than kTouchDepth.
-//    Self-collision pairs are all checked;
+//    GuideOptions::clearance, except
+//    - a floating robot's links that carry a contact-capable surface (its limbs: soles, shanks,
+//      hands) with the links of other entities carrying a surface they may touch (the contact
+//      pairs): not checked, as RBPRM checks only the trunk and lets the limbs find their contacts
+//      (without this the feet, interpolated rigidly, cannot pass a stair's riser);
+//    - the other links of a contact of the initial or goal stance (an object on a platform, a
+//      fingertip on a ball, a palm on a handle): they may touch, but sink into each other by at
+//      most kTouchDepth more than at either end;
+//    - the pairs closer than the clearance at the initial or at the goal configuration (the task
+//      starts or ends there: a thigh on a chair's seat beside its contact): not checked;
+//    - self-collision pairs: not checked. The guide's joints are a straight line between two
+//      postures that the search's postures replace (each solve keeps the robot off itself); a
+//      hand's fingertips, interpolated, pass each other where no real motion would.
 //  - a support within reach: a floating robot under gravity has a contact-capable surface (one
 //    that the contact pairs offer) whose origin lies within GuideOptions::reach of a surface of
 //    another entity it may touch (objects, carried, need none).
