@@ -45,6 +45,16 @@ TEST(GuideCommand, WritesAGuideThatPastedIntoTheScenarioGivesTheSameMilestones) 
   }
 }
 
+// The seed is the guide's only source of randomness: the same seed, the same text.
+TEST(GuideCommand, TheSameSeedWritesTheSameGuide) {
+  const std::string file = test::source_path("scenarios/guide_free/stairs.yaml");
+  const test::CliResult a = test::run_cli({"guide", file, "--seed", "7"});
+  const test::CliResult b = test::run_cli({"guide", file, "--seed", "7"});
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(a.out.rfind("# computed by stanceplan guide (seed 7): ", 0), 0u) << a.out;
+  EXPECT_EQ(a.out, b.out);
+}
+
 TEST(GuideCommand, AGoalStanceWithoutPostureExitsTwoNamingTheStage) {
   const test::CliResult r =
       test::run_cli({"plan", test::source_path("tests/data/guide/feet_apart.yaml"), "--out",
