@@ -7,6 +7,7 @@
 #include "app/certify_command.h"
 #include "app/cli_validators.h"
 #include "app/gui/panel_command.h"
+#include "app/guide_command.h"
 #include "app/inspect_command.h"
 #include "app/live/data_dir.h"
 #include "app/live/main_job.h"
@@ -103,7 +104,24 @@ void add_plan(CLI::App& cli, PlanOptions& options) {
       "thread, then the plan's steps (DIR/steps/) and strip (DIR/strip.png)");
   cmd->add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
                 "with --snapshots: list rejected candidates in events.jsonl without drawing them");
-  cmd->add_flag("--stats", options.stats, "print timings: search, solves, snapshots, total");
+  cmd->add_flag("--stats", options.stats,
+                "print timings: guide (when computed), search, solves, snapshots, total");
+  cmd->add_option("--seed", options.seed,
+                  "seed of the computed guide, for a scenario without a guide: section "
+                  "(default: search.guide_seed, else 1)");
+}
+
+void add_guide(CLI::App& cli, GuideCommandOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "guide",
+      "Compute a scenario's guide path (goal posture, collision-free path, milestones) and write "
+      "it in the scenario's guide: syntax. Exit 2 when a stage fails");
+  cmd->add_option("scenario", options.scenario, "scenario file (stanceplan/scenario@1 YAML)")
+      ->required();
+  cmd->add_option("--out", options.out, "file to write (default: standard output)");
+  cmd->add_option("--strip", options.strip, "draw the milestones as a figure strip (PNG)");
+  cmd->add_option("--seed", options.seed, "seed (default: search.guide_seed, else 1)");
+  cmd->add_flag("--stats", options.stats, "print the guide's timings");
 }
 
 // The main job: `stanceplan [SCENARIO.yaml]` with no sub-command (app/live/main_job.h).
@@ -140,6 +158,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_posture(cli, posture);
   PlanOptions plan;
   add_plan(cli, plan);
+  GuideCommandOptions guide;
+  add_guide(cli, guide);
   RenderOptions render_options;
   add_render_subcommand(cli, render_options);
   PanelOptions panel;
@@ -164,6 +184,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("inspect")) return run_inspect(inspect, out, err);
     if (cli.got_subcommand("posture")) return run_posture(posture, out, err);
     if (cli.got_subcommand("plan")) return run_plan(plan, out, err);
+    if (cli.got_subcommand("guide")) return run_guide(guide, out, err);
     if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
     if (cli.got_subcommand("render")) return run_render(render_options, out, err);
     if (cli.got_subcommand("panel")) return run_panel(panel, out, err);

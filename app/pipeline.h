@@ -11,6 +11,7 @@
 
 #include "app/exit_codes.h"
 #include "app/plan_output.h"
+#include "planner/guide/guide_planner.h"
 #include "planner/io/plan_reader.h"
 #include "planner/io/scenario.h"
 #include "planner/search/stance_search.h"
@@ -37,6 +38,7 @@ struct PlanOptions {
   std::string snapshots;
   bool snapshots_rejected = true;  // false: rejected candidates are listed without an image
   bool stats = false;              // print timing figures (search, snapshots, final render)
+  std::optional<unsigned> seed;    // the computed guide's seed (default: search.guide_seed)
 };
 
 // A scenario planned: the exit code (0: a certified plan written to PlanOptions::out; 2: no plan,
@@ -54,6 +56,19 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
 // `path`. False (said on `err`) when nothing was written.
 bool write_partial_plan(const SearchResult& result, const Scenario& scenario,
                         const std::string& path, std::ostream& err);
+
+// --- the computed guide (pipeline_guide.cpp)
+// When the scenario has no `guide:` section: computes one (planner/guide/guide_planner.h) with the
+// scenario's guide settings and, when computed, reads it into the scenario exactly as the section
+// written by computed_guide_text would be read. nullopt when the scenario has its own guide.
+std::optional<ComputedGuide> complete_guide(Scenario& scenario);
+// The guide in the scenario's `guide:` syntax, with a comment line saying how it was computed.
+std::string computed_guide_text(const Scenario& scenario, const ComputedGuide& guide);
+// "stats: guide ..." (guide time apart from the search's).
+void print_guide_stats(const ComputedGuide& guide, std::ostream& out);
+// The initial configuration and every milestone's configuration as a figure strip (PNG).
+void write_guide_strip(const Scenario& scenario, const ComputedGuide& guide,
+                       const std::string& path, std::ostream& out, std::ostream& err);
 
 // --- figures (pipeline_figures.cpp)
 // The figures' view of a plan read from its file (named after its scenario file, else itself) or

@@ -116,10 +116,19 @@ bool write_partial_plan(const SearchResult& result, const Scenario& scenario,
 Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostream& err) {
   const auto started = std::chrono::steady_clock::now();
   Planned planned;
-  planned.scenario = std::make_shared<const Scenario>(load_scenario(options.scenario));
+  Scenario loaded = load_scenario(options.scenario);
+  if (options.seed) loaded.guide.seed = *options.seed;
+  // No guide: computed before the session forks its solver processes (docs/ARCHITECTURE.md).
+  const std::optional<ComputedGuide> guide = complete_guide(loaded);
+  planned.scenario = std::make_shared<const Scenario>(std::move(loaded));
   const Scenario& scenario = *planned.scenario;
   print_computed_collision_matrices(scenario.scene, err);
   print_model_warnings(scenario.scene, err);
+  if (guide && options.stats) print_guide_stats(*guide, out);
+  if (guide && guide->status != GuideStatus::Computed) {
+    err << "stanceplan: no plan: " << guide->message << "\n";
+    return planned;
+  }
   SearchOptions search = scenario.search;
   if (options.threads) search.threads = *options.threads;
   if (options.time_limit) search.time_limit_s = *options.time_limit;

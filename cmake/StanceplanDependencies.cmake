@@ -9,6 +9,7 @@ find_package(yaml-cpp REQUIRED)       # target `yaml-cpp` (0.7 has no namespaced
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(Qhull REQUIRED)          # libqhull-dev: convex hulls of collision meshes
+find_package(ompl 1.5 REQUIRED)       # libompl-dev: the computed guide path (planner/guide/); no imported target
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)  # also every gl* entry point: never link libGL
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)        # stb_truetype for captions (built into libstb)
 find_package(PNG REQUIRED)            # libpng at compression level 1 (stb_image_write is 3x slower)

@@ -9,6 +9,7 @@ packages=(
   libosmesa6-dev libimgui-dev libglfw3-dev libgl-dev libglx-dev libopengl-dev
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev libstb-dev libpng-dev
   libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev  # guide path
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
   clang-14 libclang-rt-14-dev  # libFuzzer targets (fuzz/, scripts/run_fuzz.sh)

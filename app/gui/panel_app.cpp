@@ -406,9 +406,15 @@ void PanelApp::handle_shortcuts() {
 }  // namespace panel_detail
 
 int run_panel(const PanelOptions& options, std::ostream& out, std::ostream& err) {
-  const Scenario scenario = load_scenario(options.scenario);
+  Scenario scenario = load_scenario(options.scenario);
   print_computed_collision_matrices(scenario.scene, err);
   print_model_warnings(scenario.scene, err);
+  // No guide: computed before the session forks its solver processes (app/pipeline.h).
+  if (const std::optional<ComputedGuide> guide = complete_guide(scenario);
+      guide && guide->status != GuideStatus::Computed) {
+    err << "stanceplan: no plan: " << guide->message << "\n";
+    return kExitFailed;
+  }
   std::vector<gui::ScriptAction> script;
   if (!options.script.empty()) script = gui::read_panel_script(options.script);
   std::unique_ptr<panel_detail::PanelApp> app;

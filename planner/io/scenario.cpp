@@ -61,6 +61,7 @@ class ScenarioReader {
     require_support(stances["initial"], "stances.initial", s.initial_stance, s);
     require_support(stances["goal"], "stances.goal", s.goal_stance, s);
     read_guide(root["guide"], s);
+    s.has_guide = bool(root["guide"]);
     read_weights(root["weights"], s);
     read_search(root["search"], s);
     read_solver(root["solver"], s);
@@ -492,6 +493,23 @@ class ScenarioReader {
                  "\" cannot be in static equilibrium under gravity without one");
   }
 
+ public:
+  // A guide given as text (read_guide_section).
+  void read_guide_text(const std::string& text, Scenario& s) {
+    YAML::Node root;
+    try {
+      root = YAML::Load(text);
+    } catch (const YAML::Exception& e) {
+      throw InputError(path_ + ":" + std::to_string(e.mark.line + 1) +
+                       ": not valid YAML: " + e.msg);
+    }
+    expect_keys(root, "", {"guide"});
+    s.milestones.clear(), s.milestone_masks.clear(), s.milestone_tolerances.clear();
+    s.milestone_contact_pairs.clear();
+    read_guide(require(root, "guide", ""), s);
+  }
+
+ private:
   // Milestones are partial: what a milestone leaves out keeps its value from the previous one
   // (the first continues the initial configuration).
   void read_guide(const YAML::Node& node, Scenario& s) const {
@@ -583,7 +601,7 @@ class ScenarioReader {
                 {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
                  "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
                  "max_retries", "contact_pairs", "last_contacts", "min_contacts",
-                 "defer_repeated_failures"});
+                 "defer_repeated_failures", "guide_seed", "guide_spacing", "guide_time_limit"});
     if (node["contact_pairs"])
       read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"])
@@ -614,6 +632,13 @@ class ScenarioReader {
       s.search.milestone_tolerance =
           positive(node["milestone_tolerance"], "search.milestone_tolerance");
     if (node["threads"]) s.search.threads = integer(node["threads"], "search.threads", 0);
+    if (node["guide_seed"])
+      s.guide.seed = std::uint32_t(integer(node["guide_seed"], "search.guide_seed", 0));
+    if (node["guide_spacing"])
+      s.guide.spacing = positive(node["guide_spacing"], "search.guide_spacing");
+    if (node["guide_time_limit"])
+      s.guide.time_limit = positive(node["guide_time_limit"], "search.guide_time_limit");
+    s.guide.contact_pairs = s.search.contact_pairs;
   }
 
   void read_patterns(const YAML::Node& pairs, const std::string& field,
@@ -647,6 +672,10 @@ Scenario load_scenario(const std::string& path) {
   Scenario s = ScenarioReader(path).read();
   s.scene.gravity = s.spec.gravity;
   return s;
+}
+
+void read_guide_section(Scenario& scenario, const std::string& text, const std::string& origin) {
+  ScenarioReader(origin).read_guide_text(text, scenario);
 }
 
 }  // namespace stanceplan

@@ -41,6 +41,9 @@ std::string stance_summary(const Scene& scene, const Stance& stance) {
 }
 
 std::string step_action(const Scene& scene, const PlanStep& step) {
+  // A figure of something that is not a plan step (a computed guide's milestone) labels itself.
+  if (!step.changed && step.action != "initial" && step.action != "add" && step.action != "remove")
+    return step.action;
   if (step.action == "initial" || !step.changed) return "initial stance";
   const std::string s1 = surface_name(scene, step.changed->s1),
                     s2 = surface_name(scene, step.changed->s2);

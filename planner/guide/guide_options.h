@@ -1,0 +1,31 @@
+#pragma once
+// Settings of the computed guide path (docs/METHOD.md section 3, "The guide computed"): the seed,
+// the budget of the path planner, the clearance and reach of its validity rule, and the spacing of
+// the milestones it leaves for the search.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace stanceplan {
+
+struct GuideOptions {
+  std::uint32_t seed = 1;   // the path planner's samples (same seed, same guide)
+  double time_limit = 5.0;  // s: the path planner's budget (no path within it: GuideStatus::NoPath)
+  // Clearance (m) every checked collision pair keeps along the path: the guide stays off the
+  // obstacles by more than the solver's margin, so that the postures near it are easy to solve.
+  double clearance = 0.01;
+  // RBPRM's reachability condition, simplified: a floating robot under gravity always has a
+  // contact-capable surface within this distance (m) of a surface it may touch.
+  double reach = 0.45;
+  // Largest tilt (rad) of a floating robot's trunk from its initial roll and pitch while sampled
+  // (objects turn freely).
+  double max_tilt = 0.3;
+  // Base travel (m) between two milestones: a few steps of the search.
+  double spacing = 0.3;
+  // The contact pairs the search may offer (search.contact_pairs): the validity rule's supports.
+  // Empty: every pair of surfaces of different entities.
+  std::vector<std::pair<std::string, std::string>> contact_pairs;
+};
+
+}  // namespace stanceplan

@@ -1,0 +1,38 @@
+#pragma once
+// The computed guide path (docs/METHOD.md section 3, "The guide computed"): the paper's
+// preprocessing step, a collision-free path from the initial to a goal configuration, sampled into
+// the milestones the search follows. Three stages, each named when it fails:
+//   goal posture: the IK-statics solver on the goal stance (goal_posture.h);
+//   path:         RRT-Connect in the guide space (guide_space.h, ompl_path.h) under the validity
+//                 rule of guide_validity.h, then shortcuts;
+//   milestones:   points every GuideOptions::spacing of base travel (guide_milestones.h).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "planner/guide/guide_milestones.h"
+#include "planner/guide/guide_options.h"
+#include "planner/plan/problem.h"
+
+namespace stanceplan {
+
+enum class GuideStatus { Computed, NoGoalPosture, NoPath };
+const char* to_string(GuideStatus status);
+
+struct ComputedGuide {
+  GuideStatus status = GuideStatus::NoPath;
+  // When not computed: the stage that failed and why, e.g. "guide: goal posture: no posture for
+  // the goal stance: Infeasible (...)" or "guide: path: no collision-free path ... within 5 s".
+  std::string message;
+  Eigen::VectorXd q_goal;                                 // the goal posture (when solved)
+  std::vector<Eigen::VectorXd> path;                      // configurations at the path's waypoints
+  std::vector<Eigen::VectorXd> milestone_configurations;  // configurations at the milestones
+  std::vector<GuideMilestone> milestones;                 // what a scenario's guide: section states
+  int raw_waypoints = 0;                                  // the planner's path before the shortcuts
+  int checked_pairs = 0;  // collision pairs the validity rule checks
+  double posture_time_s = 0.0, path_time_s = 0.0, time_s = 0.0;
+};
+
+ComputedGuide compute_guide(const Problem& problem, const GuideOptions& options);
+
+}  // namespace stanceplan

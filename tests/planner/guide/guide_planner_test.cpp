@@ -1,0 +1,105 @@
+// The computed guide (planner/guide/): the goal configuration carried towards the goal contacts,
+// the validity rule, the milestones' spacing and form, determinism, and each stage's failure.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "planner/guide/goal_posture.h"
+#include "planner/guide/guide_planner.h"
+#include "planner/guide/guide_validity.h"
+#include "planner/io/scenario.h"
+#include "tests/support/paths.h"
+
+namespace stanceplan {
+namespace {
+
+Scenario guide_free(const std::string& name) {
+  return load_scenario(test::source_path("scenarios/guide_free/" + name));
+}
+
+double yaw_of(const Eigen::VectorXd& q) {
+  const Eigen::Quaterniond r(q[3], q[4], q[5], q[6]);
+  const Eigen::Matrix3d R = r.normalized().matrix();
+  return std::atan2(R(1, 0), R(0, 0));
+}
+
+// The walk with a turn ends with the soles around (1, 1) facing +y: the waist is carried there and
+// turned by 90 degrees before the solver starts.
+TEST(GuideGoalPosture, TheInitialConfigurationIsCarriedAndTurnedTowardsTheGoalContacts) {
+  const Scenario s = guide_free("walk_turn.yaml");
+  const Eigen::VectorXd q = carried_configuration(s);
+  EXPECT_NEAR(q[0], 1.0, 0.02);
+  EXPECT_NEAR(q[1], 1.0, 0.02);
+  EXPECT_NEAR(q[2], 0.90, 0.02);  // the soles start 8.5 mm off the floor
+  EXPECT_NEAR(yaw_of(q), M_PI / 2, 1e-3);
+  // The joints are the initial ones.
+  EXPECT_EQ(q.tail(q.size() - 7), s.initial_configuration.tail(q.size() - 7));
+}
+
+TEST(GuideValidityRule, StandingIsValidSinkingOrFlyingIsNot) {
+  const Scenario s = guide_free("walk.yaml");
+  GuideValidity validity(s, s.initial_configuration, s.initial_configuration, s.guide);
+  Eigen::VectorXd q = s.initial_configuration;
+  EXPECT_TRUE(validity.valid(q)) << validity.why_invalid(q);
+  q[2] = 0.05;  // the waist 5 cm up: the trunk in the floor (the legs may touch it)
+  EXPECT_FALSE(validity.valid(q));
+  EXPECT_NE(validity.why_invalid(q).find("env/"), std::string::npos) << validity.why_invalid(q);
+  q[2] = 2.5;  // flying: no sole within reach of the floor
+  EXPECT_FALSE(validity.valid(q));
+  EXPECT_EQ(validity.why_invalid(q),
+            "robot: no contact-capable surface within 0.45 m of a support");
+}
+
+// Milestones at most `spacing` apart (base travel, a turn counted 0.5 m per radian), the last at
+// the goal posture; positions only (a robot's heading is not stated), nothing else.
+TEST(GuidePlanner, MilestonesAreSpacedAlongThePathAndEndAtTheGoalPosture) {
+  const Scenario s = guide_free("walk_turn.yaml");
+  const ComputedGuide g = compute_guide(s, s.guide);
+  ASSERT_EQ(g.status, GuideStatus::Computed) << g.message;
+  ASSERT_GE(g.milestones.size(), 5u);
+  Eigen::Vector3d previous = s.initial_configuration.head<3>();
+  for (const GuideMilestone& m : g.milestones) {
+    ASSERT_EQ(m.roots.size(), 1u);
+    EXPECT_EQ(m.roots[0].entity, 0);
+    EXPECT_FALSE(m.roots[0].rpy.has_value());  // a robot's heading follows its feet
+    EXPECT_LE((m.roots[0].position - previous).norm(), s.guide.spacing + 1e-9);
+    previous = m.roots[0].position;
+  }
+  EXPECT_LT((previous - g.q_goal.head<3>()).norm(), 1e-9);
+  EXPECT_NEAR(yaw_of(g.q_goal), M_PI / 2, 0.05);  // the goal posture faces +y
+  EXPECT_EQ(g.milestone_configurations.back(), g.q_goal);
+}
+
+TEST(GuidePlanner, TheSameSeedGivesTheSameGuide) {
+  const Scenario s = guide_free("stairs.yaml");
+  const ComputedGuide a = compute_guide(s, s.guide), b = compute_guide(s, s.guide);
+  ASSERT_EQ(a.status, GuideStatus::Computed) << a.message;
+  ASSERT_EQ(a.path.size(), b.path.size());
+  for (size_t i = 0; i < a.path.size(); ++i) EXPECT_EQ(a.path[i], b.path[i]) << "waypoint " << i;
+  ASSERT_EQ(a.milestone_configurations.size(), b.milestone_configurations.size());
+}
+
+TEST(GuidePlanner, AGoalStanceWithoutPostureFailsAtTheGoalPostureStage) {
+  const Scenario s = load_scenario(test::source_path("tests/data/guide/feet_apart.yaml"));
+  const ComputedGuide g = compute_guide(s, s.guide);
+  EXPECT_EQ(g.status, GuideStatus::NoGoalPosture);
+  EXPECT_EQ(g.message.rfind("guide: goal posture: no posture for the goal stance of ", 0), 0u)
+      << g.message;
+}
+
+TEST(GuidePlanner, AGoalBehindAWallFailsAtThePathStageWithinItsBudget) {
+  const Scenario s = load_scenario(test::source_path("tests/data/guide/behind_wall.yaml"));
+  GuideOptions options = s.guide;
+  options.time_limit = 0.5;
+  const ComputedGuide g = compute_guide(s, options);
+  EXPECT_EQ(g.status, GuideStatus::NoPath);
+  EXPECT_EQ(g.message.rfind("guide: path: no collision-free path from the initial to the goal "
+                            "configuration within 0.5 s",
+                            0),
+            0u)
+      << g.message;
+}
+
+}  // namespace
+}  // namespace stanceplan

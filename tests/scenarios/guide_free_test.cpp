@@ -1,0 +1,68 @@
+// Guide-free scenarios (scenarios/guide_free/): no guide: section, the program computes the guide
+// (planner/guide/) and the search follows it to a certified plan. One solver process: solver calls
+// are deterministic, and so is the guide (its seed), so these plans are the same on every run.
+#include <gtest/gtest.h>
+
+#include "app/pipeline.h"
+#include "tests/support/paths.h"
+#include "tests/support/planned_scenario.h"
+
+namespace stanceplan {
+namespace {
+
+SearchResult plan_guide_free(const std::string& name, Scenario* scenario) {
+  *scenario = load_scenario(test::source_path("scenarios/guide_free/" + name + ".yaml"));
+  EXPECT_FALSE(scenario->has_guide);
+  const std::optional<ComputedGuide> guide = app::complete_guide(*scenario);
+  EXPECT_TRUE(guide.has_value());
+  EXPECT_EQ(guide->status, GuideStatus::Computed) << guide->message;
+  EXPECT_EQ(scenario->milestones.size(), guide->milestones.size());
+  return test::plan_with_one_process(*scenario);
+}
+
+TEST(GuideFree, TheWalkPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("walk", &s);
+  test::expect_certified(s, result, "guide_free_walk");
+}
+
+TEST(GuideFree, TheWalkWithATurnPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("walk_turn", &s);
+  test::expect_certified(s, result, "guide_free_walk_turn");
+}
+
+TEST(GuideFree, TheSideStepPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("side_step", &s);
+  test::expect_certified(s, result, "guide_free_side_step");
+}
+
+TEST(GuideFree, TheStairsPlanAndCertify) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("stairs", &s);
+  test::expect_certified(s, result, "guide_free_stairs");
+}
+
+// The paper's scenarios that plan guide-free within the CI budget (scenarios/guide_free/README.md
+// says what the desk and the dual-arm hand-over do).
+TEST(GuideFree, TheBallTurnedOverInTheHandPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("ball", &s);
+  test::expect_certified(s, result, "guide_free_ball");
+}
+
+TEST(GuideFree, ThePenRegraspPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("pen", &s);
+  test::expect_certified(s, result, "guide_free_pen");
+}
+
+TEST(GuideFree, TheTableCarriedByTwoHumanoidsPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("table", &s);
+  test::expect_certified(s, result, "guide_free_table");
+}
+
+}  // namespace
+}  // namespace stanceplan
