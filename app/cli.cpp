@@ -10,6 +10,7 @@
 #include "app/inspect_command.h"
 #include "app/live/data_dir.h"
 #include "app/live/main_job.h"
+#include "app/motion_command.h"
 #include "app/plan_command.h"
 #include "app/posture_command.h"
 #include "app/render_command.h"
@@ -100,6 +101,9 @@ void add_plan(CLI::App& cli, PlanOptions& options) {
   cmd->add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
                 "with --snapshots: list rejected candidates in events.jsonl without drawing them");
   cmd->add_flag("--stats", options.stats, "print timings: search, solves, snapshots, total");
+  cmd->add_flag("--motion", options.motion,
+                "add the quasi-static motion between consecutive steps (certified sample by "
+                "sample; plan format @2)");
 }
 
 // The main job: `stanceplan [SCENARIO.yaml]` with no sub-command (app/live/main_job.h).
@@ -140,6 +144,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_render_subcommand(cli, render_options);
   PanelOptions panel;
   add_panel_subcommand(cli, panel);
+  MotionCommandOptions motion;
+  add_motion_subcommand(cli, motion);
   std::string certify_plan;
   cli.add_subcommand("certify",
                      "Re-check a plan from the plan file and the models alone (never the solver). "
@@ -163,6 +169,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
     if (cli.got_subcommand("render")) return run_render(render_options, out, err);
     if (cli.got_subcommand("panel")) return run_panel(panel, out, err);
+    if (cli.got_subcommand("motion")) return run_motion(motion, out, err);
     return run_main_job(main_job, out, err);
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";

@@ -45,6 +45,7 @@ class ContactGeometryBlock : public ConstraintBlock {
   int task_;
   bool fixed_;
   Placement placement_;
+  double standoff_ = 0.0;  // E9 bound: s1 held this far above s2 (ContactTask::standoff)
   std::vector<int> columns_;
 };
 

@@ -14,6 +14,7 @@ ContactGeometryBlock::ContactGeometryBlock(const NlpState& state, int task)
   const ContactTask& t = state.request.contacts[task];
   fixed_ = t.placement.has_value();
   if (fixed_) placement_ = *t.placement;
+  standoff_ = t.standoff;
   const ContactConstants& c = state.constants[task];
   append_link_columns(state.scene.system, c.e1, c.l1, &columns_);
   append_link_columns(state.scene.system, c.e2, c.l2, &columns_);
@@ -24,7 +25,8 @@ void ContactGeometryBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,
                                   Eigen::Ref<Eigen::VectorXd> upper) const {
   lower.setZero();
   upper.setZero();
-  lower[3] = -kInf;  // z1 . z2 <= 0: the opposed branch of E8
+  lower[2] = upper[2] = standoff_;  // E9, held above the plane when the task says so
+  lower[3] = -kInf;                 // z1 . z2 <= 0: the opposed branch of E8
   if (!fixed_) return;
   lower[4] = upper[4] = placement_.x;
   lower[5] = upper[5] = placement_.y;
