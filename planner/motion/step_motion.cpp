@@ -48,6 +48,16 @@ StepMotionPlanner::StepMotionPlanner(const Scene& scene, const SolverOptions& so
   q_ref_.resize(scene.system.nq());
 }
 
+double StepMotionPlanner::LinkPath::length() const {
+  return std::hypot(to.x - from.x, to.y - from.y, h_to - h_from);
+}
+
+StepMotionPlanner::LinkPath StepMotionPlanner::lift_path(const Contact& contact,
+                                                         const Eigen::VectorXd& q) const {
+  const ContactTask task = lift_task(contact, q);
+  return {task, *task.placement, *task.placement, 0.0, options_.clearance};
+}
+
 ContactTask StepMotionPlanner::lift_task(const Contact& contact, const Eigen::VectorXd& q) const {
   ContactTask task;
   task.contact = contact;
@@ -96,9 +106,14 @@ PostureResult StepMotionPlanner::project(const Segment& segment, double s,
                                          const MotionSample* previous) {
   interpolate_configuration(scene_.system, *segment.q_start, *segment.q_ref_end, s, q_ref_);
   request_.contacts.resize(size_t(held_));
-  if (segment.standoff) {
-    request_.contacts.push_back(*segment.standoff);
-    request_.contacts.back().standoff = s * options_.clearance;  // E9 offset along s2's normal
+  if (segment.link) {
+    const LinkPath& path = *segment.link;
+    ContactTask& task = request_.contacts.emplace_back(path.task);
+    const double turn = std::remainder(path.to.theta - path.from.theta, 2.0 * M_PI);
+    task.placement = Placement{path.from.x + s * (path.to.x - path.from.x),
+                               path.from.y + s * (path.to.y - path.from.y),
+                               path.from.theta + s * turn};       // E10-E13
+    task.standoff = path.h_from + s * (path.h_to - path.h_from);  // E9 offset along s2's normal
   }
   for (int t = 0; t < held_; ++t) request_.contacts[size_t(t)].force_guess_W.clear();
   if (previous)  // warm start: the previous sample's forces (held contacts only carry force)
@@ -125,7 +140,7 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
                                     StepMotion* motion) {
   const double joint = options_.joint_spacing, point = options_.point_spacing;
   double guess = spacing_->measure(*segment.q_start, *segment.q_ref_end).ratio(joint, point);
-  if (segment.standoff) guess = std::max(guess, options_.clearance / point);
+  if (segment.link) guess = std::max(guess, segment.link->length() / point);
   const double ds_max = 1.0 / std::max(1.0, std::ceil(guess / kFirstStepFraction));
   double s = 0.0, ds = ds_max;
   int halvings = 0;
@@ -179,15 +194,34 @@ void StepMotionPlanner::plan_segments(const PlanStep& a, const PlanStep& b, Step
   const bool lands = b.action == "add" && b.changed && options_.clearance > 0.0;
   std::vector<MotionSample>& samples = motion->samples;
   if (lifts &&
-      !run_segment({"lift", &a.q, &a.q, nullptr, lift_task(*a.changed, a.q)}, &samples, motion))
+      !run_segment({"lift", &a.q, &a.q, nullptr, lift_path(*a.changed, a.q)}, &samples, motion))
     return;
   std::vector<MotionSample> landing;  // computed from b upwards, appended backwards
   if (lands &&
-      !run_segment({"approach", &b.q, &b.q, nullptr, lift_task(*b.changed, b.q)}, &landing, motion))
+      !run_segment({"approach", &b.q, &b.q, nullptr, lift_path(*b.changed, b.q)}, &landing, motion))
     return;
   const Eigen::VectorXd q_from = samples.empty() ? a.q : samples.back().q;
   const Eigen::VectorXd q_to = landing.empty() ? b.q : landing.back().q;
-  if (!run_segment({"travel", &q_from, &q_to, &q_to, std::nullopt}, &samples, motion)) return;
+  // A surface lifted from s2 and put down on s2 again (a foot step) glides at the clearance from
+  // above its old placement to above its new one; otherwise, or when the glide fails, it is free.
+  std::optional<LinkPath> glide;
+  if (lifts && lands && a.changed->same_surfaces(*b.changed)) {
+    glide = lift_path(*b.changed, b.q);
+    glide->from = *lift_task(*a.changed, a.q).placement;
+    glide->h_from = options_.clearance;
+  }
+  const size_t before = samples.size();
+  bool travelled = false;
+  if (glide) {
+    travelled = run_segment({"travel", &q_from, &q_to, &q_to, glide}, &samples, motion);
+    if (!travelled) {  // free travel from the same start
+      samples.resize(before);
+      motion->status = MotionStatus::Solved;
+      motion->message.clear();
+    }
+  }
+  if (!travelled && !run_segment({"travel", &q_from, &q_to, &q_to, std::nullopt}, &samples, motion))
+    return;
   samples.insert(samples.end(), std::make_move_iterator(landing.rbegin()),
                  std::make_move_iterator(landing.rend()));
 }

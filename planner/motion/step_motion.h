@@ -39,6 +39,15 @@ class StepMotionPlanner {
   const MotionOptions& options() const { return options_; }
 
  private:
+  // A contact of the moving link held off its surface: its placement goes from `from` to `to`
+  // and its height above s2 from `h_from` to `h_to`.
+  struct LinkPath {
+    ContactTask task;  // unloaded
+    Placement from, to;
+    double h_from = 0.0, h_to = 0.0;
+    double length() const;  // of the path of s1's origin (m)
+  };
+
   // One piece of the path: the reference runs from q_start to q_ref_end; `end` is the fixed
   // configuration the last sample must join (nullptr: the projection at s = 1 is the last sample).
   struct Segment {
@@ -46,7 +55,9 @@ class StepMotionPlanner {
     const Eigen::VectorXd* q_start = nullptr;
     const Eigen::VectorXd* q_ref_end = nullptr;
     const Eigen::VectorXd* end = nullptr;
-    std::optional<ContactTask> standoff;  // the contact lifted to the clearance along s in [0, 1]
+    // The moving link held off its surface (E9 with a standoff, E10-E13 at a placement), both
+    // interpolated along s in [0, 1]; nullopt: the link is free (E20 keeps it clear).
+    std::optional<LinkPath> link;
   };
 
   bool set_up(const PlanStep& a, const PlanStep& b, StepMotion* motion);
@@ -58,6 +69,8 @@ class StepMotionPlanner {
   PostureResult project(const Segment& segment, double s, const Eigen::VectorXd& q_prev,
                         const MotionSample* previous);
   ContactTask lift_task(const Contact& contact, const Eigen::VectorXd& q) const;
+  // s1 straight up from its placement at q to the clearance.
+  LinkPath lift_path(const Contact& contact, const Eigen::VectorXd& q) const;
 
   const Scene& scene_;
   PostureSolver solver_;
