@@ -36,6 +36,13 @@ namespace {
 SolverOptions projection_options(const SolverOptions& plan, const MotionOptions& motion) {
   SolverOptions out = plan;
   out.w_configuration *= motion.reference_weight;  // E22 dominates E23-E24
+  // Each sample starts next to its solution (the previous sample): a small, fixed barrier and
+  // starting points left where they are. Measured on the walk's 22 steps (same 959 solves): median
+  // 231 -> 162 ms per step, p95 1012 -> 543 ms, against Ipopt's adaptive barrier from 0.1.
+  out.ipopt_options.insert(out.ipopt_options.begin(), {{"mu_strategy", "monotone"},
+                                                       {"mu_init", "1e-6"},
+                                                       {"bound_push", "1e-8"},
+                                                       {"bound_frac", "1e-8"}});
   return out;
 }
 }  // namespace
