@@ -20,7 +20,7 @@ struct MotionOptions {
   double reference_weight = 1000.0;
   // The interpolation step is halved at most this many times for one sample (a projection that
   // fails or lands too far from its predecessor) before the motion fails.
-  int max_halvings = 8;
+  int max_halvings = 6;
   // At most this many samples per step.
   int max_samples = 2000;
 };

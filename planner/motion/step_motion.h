@@ -70,17 +70,10 @@ class StepMotionPlanner {
                         const MotionSample* previous);
   ContactTask lift_task(const Contact& contact, const Eigen::VectorXd& q) const;
   // s1 straight up from its placement at q to the clearance.
-  LinkPath lift_path(const Contact& contact, const Eigen::VectorXd& q, double height) const;
-  // The lift of `contact` from q into `samples`, at the clearance, else at half and a quarter of
-  // it: the height reached (0: none, `motion` says why).
-  double lift(const char* name, const Contact& contact, const Eigen::VectorXd& q,
-              std::vector<MotionSample>* samples, StepMotion* motion);
+  LinkPath lift_path(const Contact& contact, const Eigen::VectorXd& q) const;
 
   const Scene& scene_;
   PostureSolver solver_;
-  // Ipopt's own barrier strategy, for a projection the fast settings do not solve (desk: 7 of 44
-  // steps failed without it, mostly at the iteration limit with every constraint met).
-  PostureSolver fallback_;
   MotionOptions options_;
   int held_ = 0;            // request_.contacts[0, held_): sigma, loaded, placements fixed
   PostureRequest request_;  // reused for every sample
