@@ -11,6 +11,7 @@
 #include "app/inspect_command.h"
 #include "app/live/data_dir.h"
 #include "app/live/main_job.h"
+#include "app/motion_command.h"
 #include "app/plan_command.h"
 #include "app/posture_command.h"
 #include "app/render_command.h"
@@ -109,6 +110,9 @@ void add_plan(CLI::App& cli, PlanOptions& options) {
   cmd->add_option("--seed", options.seed,
                   "seed of the computed guide, for a scenario without a guide: section "
                   "(default: search.guide_seed, else 1)");
+  cmd->add_flag("--motion", options.motion,
+                "add the quasi-static motion between consecutive steps (certified sample by "
+                "sample; plan format @2)");
 }
 
 void add_guide(CLI::App& cli, GuideCommandOptions& options) {
@@ -136,6 +140,9 @@ void add_main_job(CLI::App& cli, MainJobOptions& options) {
       ->check(CLI::Range(1, 256));
   cli.add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
                "main job: list rejected candidates without drawing them");
+  cli.add_flag("!--no-motion", options.motion,
+               "main job without a window: no motion between the steps (plan format @1, a GIF of "
+               "the steps)");
   cli.add_option("--exit-after-frames", options.exit_after_frames,
                  "main job with a display: close the panel after N frames (scripted runs)")
       ->check(CLI::Range(1, 100000000));
@@ -164,6 +171,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_render_subcommand(cli, render_options);
   PanelOptions panel;
   add_panel_subcommand(cli, panel);
+  MotionCommandOptions motion;
+  add_motion_subcommand(cli, motion);
   std::string certify_plan;
   cli.add_subcommand("certify",
                      "Re-check a plan from the plan file and the models alone (never the solver). "
@@ -188,6 +197,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
     if (cli.got_subcommand("render")) return run_render(render_options, out, err);
     if (cli.got_subcommand("panel")) return run_panel(panel, out, err);
+    if (cli.got_subcommand("motion")) return run_motion(motion, out, err);
     return run_main_job(main_job, out, err);
   } catch (const InputError& e) {
     err << "stanceplan: error: " << e.what() << "\n";

@@ -14,6 +14,7 @@
 #include "planner/guide/guide_planner.h"
 #include "planner/io/plan_reader.h"
 #include "planner/io/scenario.h"
+#include "planner/motion/motion_options.h"
 #include "planner/search/stance_search.h"
 #include "render/figures/plan_view.h"
 #include "render/figures/sequence.h"
@@ -39,6 +40,8 @@ struct PlanOptions {
   bool snapshots_rejected = true;  // false: rejected candidates are listed without an image
   bool stats = false;              // print timing figures (search, snapshots, final render)
   std::optional<unsigned> seed;    // the computed guide's seed (default: search.guide_seed)
+  // The motion between consecutive steps (planner/motion/) in the plan written: plan --motion.
+  bool motion = false;
 };
 
 // A scenario planned: the exit code (0: a certified plan written to PlanOptions::out; 2: no plan,
@@ -69,6 +72,11 @@ void print_guide_stats(const ComputedGuide& guide, std::ostream& out);
 // The initial configuration and every milestone's configuration as a figure strip (PNG).
 void write_guide_strip(const Scenario& scenario, const ComputedGuide& guide,
                        const std::string& path, std::ostream& out, std::ostream& err);
+// --- motion (pipeline_motion.cpp)
+// Adds the motion between consecutive steps to `plan` and prints its timing on `out` (one line).
+// A step whose motion fails keeps none, with a warning on `err` naming it and why: false then.
+bool add_plan_motion(const Scene& scene, const SolverOptions& solver, const MotionOptions& options,
+                     Plan& plan, std::ostream& out, std::ostream& err);
 
 // --- figures (pipeline_figures.cpp)
 // The figures' view of a plan read from its file (named after its scenario file, else itself) or
@@ -84,6 +92,10 @@ struct FigureFiles {
   std::string steps_dir;  // DIR/step_000.png, ...
   std::string strip;      // the figure strip (PNG)
   std::string gif;        // an animated GIF of the steps
+  // A plan with motion plays it at a steady speed: this many frames a second, each step's motion
+  // (from the previous step) lasting step_seconds.
+  double fps = 10.0;
+  double step_seconds = 1.0;
 };
 // Draws the files (one mesh library for all: each mesh file read once, each warning printed
 // once); says what it wrote on `out`, missing meshes on `err`.

@@ -1,6 +1,7 @@
 // A plan's figures (app/pipeline.h): its steps, strip and GIF, drawn off-screen from a plan in
 // memory or read back from its file.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "app/pipeline.h"
+#include "render/figures/step_caption.h"
 #include "render/image/gif_writer.h"
 #include "render/image/png_io.h"
 
@@ -51,9 +53,35 @@ void write_strip(const render::PlanView& plan, const render::SequenceOptions& op
       << (plan.plan.steps.size() == 1 ? " step" : " steps") << " in " << path << "\n";
 }
 
+bool has_motion(const Plan& plan) {
+  return std::any_of(plan.steps.begin(), plan.steps.end(),
+                     [](const PlanStep& s) { return s.motion && !s.motion->samples.empty(); });
+}
+
+// The motion at a steady speed: step_seconds per step whatever its number of samples, the
+// samples picked evenly along the path [step i-1, samples..., step i].
+std::vector<render::Image> motion_frames(const render::PlanView& plan,
+                                         render::SequenceRenderer& sequence,
+                                         const FigureFiles& files) {
+  const int per_step = std::max(1, int(std::lround(files.fps * files.step_seconds)));
+  std::vector<render::Image> frames{sequence.render_step(0)};
+  for (int i = 1; i < sequence.num_steps(); ++i) {
+    const PlanStep& step = plan.plan.steps[size_t(i)];
+    const int n = step.motion ? int(step.motion->samples.size()) : 0;
+    const std::string caption = render::step_caption(plan, i);
+    for (int k = 1; k < per_step && n > 0; ++k) {
+      const int at = int(std::lround(double(k) * (n + 1) / per_step));  // 0: step i-1, n+1: step i
+      if (at >= 1 && at <= n) frames.push_back(sequence.render_motion_sample(i, at - 1, caption));
+    }
+    frames.push_back(sequence.render_step(i));
+  }
+  return frames;
+}
+
 void write_gif(const render::PlanView& plan, render::SequenceOptions options,
-               const std::string& path, const std::shared_ptr<render::MeshLibrary>& meshes,
+               const FigureFiles& files, const std::shared_ptr<render::MeshLibrary>& meshes,
                std::ostream& out, std::ostream& err) {
+  const std::string& path = files.gif;
   if (options.width > kGifMaxWidth) {
     options.height = std::max(16, options.height * kGifMaxWidth / options.width);
     options.width = kGifMaxWidth;
@@ -61,9 +89,15 @@ void write_gif(const render::PlanView& plan, render::SequenceOptions options,
   options.style.legend = false;  // too small to read in a GIF; the colours speak for themselves
   render::SequenceRenderer sequence(plan, options, meshes);
   std::vector<render::Image> frames;
-  for (int i = 0; i < sequence.num_steps(); ++i) frames.push_back(sequence.render_step(i));
+  render::GifOptions gif;
+  if (has_motion(plan.plan)) {
+    frames = motion_frames(plan, sequence, files);
+    gif.delay_cs = std::max(2, int(std::lround(100.0 / files.fps)));
+  } else {
+    for (int i = 0; i < sequence.num_steps(); ++i) frames.push_back(sequence.render_step(i));
+  }
   print_warnings(sequence.take_warnings(), err);
-  render::write_gif(path, frames);
+  render::write_gif(path, frames, gif);
   out << "render: animated GIF of " << frames.size() << " frames in " << path << "\n";
 }
 
@@ -89,7 +123,7 @@ void render_figures(const render::PlanView& plan, const render::SequenceOptions&
   const auto meshes = std::make_shared<render::MeshLibrary>();
   if (!files.steps_dir.empty()) write_steps(plan, options, files.steps_dir, meshes, out, err);
   if (!files.strip.empty()) write_strip(plan, options, files.strip, meshes, out, err);
-  if (!files.gif.empty()) write_gif(plan, options, files.gif, meshes, out, err);
+  if (!files.gif.empty()) write_gif(plan, options, files, meshes, out, err);
 }
 
 }  // namespace stanceplan::app

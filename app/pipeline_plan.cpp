@@ -173,6 +173,10 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   const SearchResult& result = *planned.result;
   if (options.stats) print_search_stats(result, events, out);
   const bool found = result.status == PlanStatus::Found;
+  // A step whose motion fails keeps none (a warning says so): the plan is still written.
+  if (found && options.motion)
+    add_plan_motion(scenario.scene, scenario.solver, MotionOptions{}, planned.result->plan, out,
+                    err);
   const int written =
       found ? write_certified_plan(result.plan, scenario, options.out, options.partial, err)
             : kExitFailed;

@@ -62,7 +62,7 @@ void add_render_subcommand(CLI::App& cli, RenderOptions& options) {
   CLI::App* cmd = cli.add_subcommand("render",
                                      "Render a plan's steps off-screen (no display needed): "
                                      "DIR/step_000.png, ..., a figure strip and an animated GIF");
-  cmd->add_option("plan", options.plan, "plan file (stanceplan/plan@1 JSON)")->required();
+  cmd->add_option("plan", options.plan, "plan file (stanceplan/plan@1 or @2 JSON)")->required();
   cmd->add_option("--out", options.out_dir, "folder for the step images (created if missing)");
   cmd->add_option_function<std::string>(
          "--size",
@@ -77,7 +77,13 @@ void add_render_subcommand(CLI::App& cli, RenderOptions& options) {
                   "camera direction: front | side | top | three-quarter (default)")
       ->check(CLI::IsMember({"front", "side", "top", "three-quarter"}));
   cmd->add_option("--strip", options.strip, "also write the figure strip of the sequence (PNG)");
-  cmd->add_option("--gif", options.gif, "also write an animated GIF of the steps");
+  cmd->add_option("--gif", options.gif,
+                  "also write an animated GIF of the steps (of the motion, when the plan has one)");
+  cmd->add_option("--fps", options.fps, "GIF of a motion: frames per second (default 10)")
+      ->check(CLI::Range(1.0, 50.0));
+  cmd->add_option("--step-seconds", options.step_seconds,
+                  "GIF of a motion: seconds each step's motion lasts (default 1)")
+      ->check(CLI::Range(0.1, 60.0));
   cmd->add_flag("--collision-geometry", options.collision_geometry,
                 "draw collision instead of visual geometry");
   cmd->add_flag("--friction-cones", options.friction_cones,
@@ -107,7 +113,8 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
     throw InputError(options.plan + ": steps: the plan has no step to render");
   const render::PlanView view = plan_view(plan);
   render_figures(view, sequence_options(options, view),
-                 {options.out_dir, options.strip, options.gif}, out, err);
+                 {options.out_dir, options.strip, options.gif, options.fps, options.step_seconds},
+                 out, err);
   return 0;
 }
 

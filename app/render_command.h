@@ -22,6 +22,8 @@ struct RenderOptions {
   std::string view = "three-quarter";  // front | side | top | three-quarter
   std::string strip;                   // figure strip PNG (empty: none)
   std::string gif;                     // animated GIF (empty: none)
+  double fps = 10.0;                   // GIF of a plan with motion: frames per second
+  double step_seconds = 1.0;           // ... and seconds per step
   bool collision_geometry = false;
   bool friction_cones = false;
   std::vector<double> eye;  // explicit camera (3 values each), replaces the view's framing

@@ -6,7 +6,7 @@
 #  - inside planner/, a folder includes only its own layer and those below it:
 #      util < model < contact, collision < scene < solver < plan < search, guide, motion < io < certify
 #    (so the search never includes io/, the file readers and writers, and the search and the
-#    computed guide (planner/guide/) never include each other: the guide hands the search milestones
+#    computed guide (planner/guide/) never include each other, nor motion/: the guide hands the search milestones
 #    through the problem, as a scenario's guide: section does).
 # KNOWN lists the includes that break a rule today and are still to be moved; it may only shrink.
 # Usage: check_layers.sh [ROOT]  (ROOT: the tree to check, default this repository)

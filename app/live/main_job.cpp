@@ -32,6 +32,7 @@ int run_headless(const std::string& scenario, const MainJobOptions& options, std
   plan.threads = options.threads;
   plan.snapshots = dir;
   plan.snapshots_rejected = options.snapshots_rejected;
+  plan.motion = options.motion;  // the plan and its animation move between the steps
   const Planned planned = plan_scenario(plan, out, err);
   if (!planned.written()) {
     err << "stanceplan: the search snapshots and " << SnapshotWriter::kIndexFile << " are in "

@@ -7,6 +7,8 @@
 #include "planner/collision/signed_distance.h"
 #include "planner/contact/polygon.h"
 #include "planner/model/kinematics.h"
+#include "planner/motion/motion_options.h"
+#include "planner/motion/sample_spacing.h"
 
 namespace stanceplan {
 namespace {
@@ -40,10 +42,11 @@ class Checker {
 
  private:
   static constexpr const char* kOrder[] = {
-      "solver status",      "sequence",        "contact plane",     "contact polygon",
-      "contact normals",    "force points",    "equilibrium force", "equilibrium moment",
-      "unilateral",         "friction",        "joint limits",      "torque limits",
-      "torque consistency", "quaternion norm", "interpenetration"};
+      "solver status",      "sequence",         "contact plane",     "contact polygon",
+      "contact normals",    "force points",     "equilibrium force", "equilibrium moment",
+      "unilateral",         "friction",         "joint limits",      "torque limits",
+      "torque consistency", "quaternion norm",  "interpenetration",  "motion status",
+      "motion joint step",  "motion point step"};
 
   // Keeps the worst violation of each check, with its step and what it was.
   void note(const std::string& name, const std::string& unit, double violation, double tolerance,
@@ -57,7 +60,7 @@ class Checker {
     if (violation > c.worst || (std::isnan(violation) && !std::isnan(c.worst))) {
       c.worst = std::isnan(violation) ? INFINITY : violation;
       c.step = step;
-      c.detail = detail;
+      c.detail = where_ + detail;
     }
   }
 
@@ -298,15 +301,69 @@ class Checker {
     }
   }
 
-  void check_step(int i, const PlanStep& step, const PlanStep* previous) {
+  // The checks of one configuration with its contacts, forces and torques (a step or a sample).
+  void check_posture(int i, const PlanStep& step) {
     data_ = system_kinematics(system_, step.q);
-    check_status(i, step);
-    check_sequence(i, step, previous);
     check_contacts(i, step);
     check_forces(i, step);
     check_equilibrium(i, step);
     check_joints(i, step);
     check_collisions(i, step);
+  }
+
+  void check_step(int i, const PlanStep& step, const PlanStep* previous) {
+    check_status(i, step);
+    check_sequence(i, step, previous);
+    check_posture(i, step);
+    if (step.motion && previous) check_motion(i, step, *previous);
+  }
+
+  // --- the motion into step i: every sample as a step holding step i-1's stance, every contact
+  // loaded; then its status and the spacing of consecutive configurations (docs/PLAN_FORMAT.md).
+  void check_motion(int i, const PlanStep& step, const PlanStep& previous) {
+    const StepMotion& motion = *step.motion;
+    const bool solved = motion.status == MotionStatus::Solved;
+    note("motion status", "", solved ? 0.0 : 1.0, 0.0, i,
+         solved ? "" : std::string(to_string(motion.status)) + ": " + motion.message);
+    PlanStep held;
+    for (const Contact& c : previous.stance.contacts()) held.contacts.push_back({c, true});
+    for (size_t k = 0; k < motion.samples.size(); ++k) {
+      where_ = "motion sample " + std::to_string(k) + ": ";
+      held.q = motion.samples[k].q;
+      held.forces = motion.samples[k].forces;
+      held.torques = motion.samples[k].torques;
+      check_posture(i, held);
+    }
+    where_.clear();
+    check_spacing(i, step, previous);
+  }
+
+  void check_spacing(int i, const PlanStep& step, const PlanStep& previous) {
+    std::vector<SurfaceRef> surfaces;
+    for (const PlanStep* s : {&previous, &step})
+      for (const PlanContact& pc : s->contacts) {
+        surfaces.push_back(pc.contact.s1);
+        surfaces.push_back(pc.contact.s2);
+      }
+    SampleSpacing spacing(scene_, surfaces);
+    const MotionOptions limits;  // the defaults: a motion with looser options is not certified
+    const std::vector<MotionSample>& samples = step.motion->samples;
+    const Eigen::VectorXd* a = &previous.q;
+    for (size_t k = 0; k <= samples.size(); ++k) {
+      const Eigen::VectorXd& b = k < samples.size() ? samples[k].q : step.q;
+      const SpacingMeasure m = spacing.measure(*a, b);
+      const std::string between =
+          (k == 0 ? "step " + std::to_string(i - 1) : "motion sample " + std::to_string(k - 1)) +
+          " to " +
+          (k < samples.size() ? "motion sample " + std::to_string(k)
+                              : "step " + std::to_string(i)) +
+          ": ";
+      note("motion joint step", "rad", m.joint, limits.joint_spacing * (1.0 + 1e-9), i,
+           between + spacing.joint_name(m));
+      note("motion point step", "m", m.point, limits.point_spacing * (1.0 + 1e-9), i,
+           between + spacing.surface_name(m));
+      a = &b;
+    }
   }
 
   const Plan& plan_;
@@ -315,6 +372,7 @@ class Checker {
   const System& system_;
   std::vector<ModelData> data_;
   std::map<std::string, CheckResult> checks_;
+  std::string where_;  // "motion sample 3: " while a sample is checked
   int first_failed_step_ = -1;
 };
 

@@ -26,9 +26,10 @@ class PlanReader {
     LoadedPlan out;
     out.file = path_;
     object(root, "");
-    if (string(root, "format", "") != "stanceplan/plan@1")
+    const std::string format = string(root, "format", "");
+    if (format != "stanceplan/plan@1" && format != "stanceplan/plan@2")
       fail("format",
-           "expected \"stanceplan/plan@1\", found \"" + string(root, "format", "") + "\"");
+           "expected \"stanceplan/plan@1\" or \"stanceplan/plan@2\", found \"" + format + "\"");
     if (root.contains("partial"))
       out.plan.partial = string(member(root, "partial", ""), "reason", "partial");
     if (root.contains("failed"))
@@ -51,8 +52,15 @@ class PlanReader {
     read_surfaces(member(root, "surfaces", ""), out.scene);
     const json& steps = member(root, "steps", "");
     if (!steps.is_array()) fail("steps", "expected an array");
-    for (size_t i = 0; i < steps.size(); ++i)
-      out.plan.steps.push_back(read_step(steps[i], "steps[" + std::to_string(i) + "]", out.scene));
+    for (size_t i = 0; i < steps.size(); ++i) {
+      const std::string f = "steps[" + std::to_string(i) + "]";
+      out.plan.steps.push_back(read_step(steps[i], f, out.scene));
+      if (steps[i].contains("motion")) {
+        if (i == 0) fail(f + ".motion", "step 0 has no motion into it");
+        out.plan.steps[i].motion = read_motion(steps[i]["motion"], f + ".motion", out.scene,
+                                               out.plan.steps[i - 1].stance.contacts());
+      }
+    }
     if (root.contains("stats")) {
       const json& s = root["stats"];
       object(s, "stats");
@@ -310,6 +318,72 @@ class PlanReader {
     return q;
   }
 
+  // `contacts`: the contacts the forces may act through; VertexForce::contact indexes them.
+  std::vector<VertexForce> read_forces(const json& forces, const std::string& field,
+                                       const Scene& scene, const std::vector<Contact>& contacts,
+                                       const std::string& which) const {
+    if (!forces.is_array()) fail(field, "expected an array");
+    std::vector<VertexForce> out;
+    for (size_t i = 0; i < forces.size(); ++i) {
+      const std::string f = field + "[" + std::to_string(i) + "]";
+      const Contact c = contact(forces[i], f, scene);
+      VertexForce vf;
+      for (size_t k = 0; k < contacts.size(); ++k)
+        if (contacts[k].same_surfaces(c)) vf.contact = int(k);
+      if (vf.contact < 0) fail(f, "the force's contact is not among " + which);
+      vf.point_W = vector3(member(forces[i], "point_world", f), f + ".point_world");
+      vf.force_W = vector3(member(forces[i], "force_world", f), f + ".force_world");
+      out.push_back(vf);
+    }
+    return out;
+  }
+
+  std::vector<Eigen::VectorXd> read_torques(const json& s, const std::string& field,
+                                            const Scene& scene) const {
+    std::vector<Eigen::VectorXd> out(scene.system.num_entities());
+    if (!s.contains("torques")) return out;
+    const json& torques = s["torques"];
+    object(torques, field + ".torques");
+    for (int e = 0; e < scene.system.num_entities(); ++e) {
+      const Entity& entity = scene.system.entity(e);
+      const Model& model = *entity.model;
+      if (model.num_dofs() == 0 || !torques.contains(entity.name)) continue;
+      out[e] = Eigen::VectorXd::Zero(model.num_dofs());
+      for (int k = 0; k < model.num_dofs(); ++k) {
+        const std::string& name = model.joints[model.dof_joints[k]].name;
+        const std::string f = field + ".torques." + entity.name;
+        object(torques[entity.name], f);
+        if (!torques[entity.name].contains(name)) fail(f, "missing joint \"" + name + "\"");
+        out[e][k] = number(torques[entity.name][name], f + "." + name);
+      }
+    }
+    return out;
+  }
+
+  // A step's motion (format @2): samples holding the previous step's stance `held`.
+  StepMotion read_motion(const json& m, const std::string& field, const Scene& scene,
+                         const std::vector<Contact>& held) const {
+    StepMotion motion;
+    const std::string status = string(m, "status", field);
+    if (!parse_motion_status(status, &motion.status))
+      fail(field + ".status",
+           "expected solved, projection_failed, spacing_not_reached or ends_disagree, found \"" +
+               status + "\"");
+    if (m.contains("message")) motion.message = string(m, "message", field);
+    const json& samples = member(m, "samples", field);
+    if (!samples.is_array()) fail(field + ".samples", "expected an array");
+    for (size_t i = 0; i < samples.size(); ++i) {
+      const std::string f = field + ".samples[" + std::to_string(i) + "]";
+      MotionSample sample;
+      sample.q = configuration(member(samples[i], "configuration", f), f + ".configuration", scene);
+      sample.forces = read_forces(member(samples[i], "forces", f), f + ".forces", scene, held,
+                                  "the previous step's stance");
+      sample.torques = read_torques(samples[i], f, scene);
+      motion.samples.push_back(std::move(sample));
+    }
+    return motion;
+  }
+
   PlanStep read_step(const json& s, const std::string& field, const Scene& scene) const {
     PlanStep step;
     step.action = string(s, "action", field);
@@ -337,37 +411,11 @@ class PlanReader {
     }
     step.stance = Stance(stance);
     step.q = configuration(member(s, "configuration", field), field + ".configuration", scene);
-    const json& forces = member(s, "forces", field);
-    if (!forces.is_array()) fail(field + ".forces", "expected an array");
-    for (size_t i = 0; i < forces.size(); ++i) {
-      const std::string f = field + ".forces[" + std::to_string(i) + "]";
-      const Contact c = contact(forces[i], f, scene);
-      VertexForce vf;
-      for (size_t k = 0; k < step.contacts.size(); ++k)
-        if (step.contacts[k].contact.same_surfaces(c)) vf.contact = int(k);
-      if (vf.contact < 0) fail(f, "the force's contact is not among the step's contacts");
-      vf.point_W = vector3(member(forces[i], "point_world", f), f + ".point_world");
-      vf.force_W = vector3(member(forces[i], "force_world", f), f + ".force_world");
-      step.forces.push_back(vf);
-    }
-    step.torques.resize(scene.system.num_entities());
-    if (s.contains("torques")) {
-      const json& torques = s["torques"];
-      object(torques, field + ".torques");
-      for (int e = 0; e < scene.system.num_entities(); ++e) {
-        const Entity& entity = scene.system.entity(e);
-        const Model& model = *entity.model;
-        if (model.num_dofs() == 0 || !torques.contains(entity.name)) continue;
-        step.torques[e] = Eigen::VectorXd::Zero(model.num_dofs());
-        for (int k = 0; k < model.num_dofs(); ++k) {
-          const std::string& name = model.joints[model.dof_joints[k]].name;
-          const std::string f = field + ".torques." + entity.name;
-          object(torques[entity.name], f);
-          if (!torques[entity.name].contains(name)) fail(f, "missing joint \"" + name + "\"");
-          step.torques[e][k] = number(torques[entity.name][name], f + "." + name);
-        }
-      }
-    }
+    std::vector<Contact> touched;
+    for (const PlanContact& pc : step.contacts) touched.push_back(pc.contact);
+    step.forces = read_forces(member(s, "forces", field), field + ".forces", scene, touched,
+                              "the step's contacts");
+    step.torques = read_torques(s, field, scene);
     if (s.contains("solver")) {
       const json& solver = s["solver"];
       object(solver, field + ".solver");

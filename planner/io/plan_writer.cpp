@@ -1,5 +1,6 @@
 #include "planner/io/plan_writer.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -87,7 +88,47 @@ json configuration_json(const Scene& scene, const Eigen::VectorXd& q) {
   return out;
 }
 
-json step_json(const Scene& scene, const PlanStep& step, int index) {
+// `contacts`: what VertexForce::contact indexes (a step's touched contacts, or the stance a
+// motion holds).
+json forces_json(const Scene& scene, const std::vector<Contact>& contacts,
+                 const std::vector<VertexForce>& forces) {
+  json out = json::array();
+  for (const VertexForce& f : forces) {
+    json j = pair_json(scene, contacts[f.contact]);
+    j["point_world"] = vec(f.point_W);
+    j["force_world"] = vec(f.force_W);
+    out.push_back(j);
+  }
+  return out;
+}
+
+json torques_json(const Scene& scene, const std::vector<Eigen::VectorXd>& torques) {
+  json out = json::object();
+  for (int e = 0; e < scene.system.num_entities(); ++e) {
+    const Model& model = *scene.system.entity(e).model;
+    if (model.num_dofs() == 0 || e >= int(torques.size()) || torques[e].size() == 0) continue;
+    json t = json::object();
+    for (int k = 0; k < model.num_dofs(); ++k)
+      t[model.joints[model.dof_joints[k]].name] = torques[e][k];
+    out[scene.system.entity(e).name] = t;
+  }
+  return out;
+}
+
+// The motion into a step: samples holding the previous step's stance, every contact loaded.
+json motion_json(const Scene& scene, const StepMotion& motion, const Stance& held) {
+  json samples = json::array();
+  for (const MotionSample& s : motion.samples)
+    samples.push_back({{"configuration", configuration_json(scene, s.q)},
+                       {"forces", forces_json(scene, held.contacts(), s.forces)},
+                       {"torques", torques_json(scene, s.torques)}});
+  json out = {{"status", to_string(motion.status)}};
+  if (!motion.message.empty()) out["message"] = motion.message;
+  out["samples"] = samples;
+  return out;
+}
+
+json step_json(const Scene& scene, const PlanStep& step, int index, const PlanStep* previous) {
   json contacts = json::array();
   for (const PlanContact& c : step.contacts) {
     json j = pair_json(scene, c.contact);
@@ -98,35 +139,23 @@ json step_json(const Scene& scene, const PlanStep& step, int index) {
   }
   json stance = json::array();
   for (const Contact& c : step.stance.contacts()) stance.push_back(pair_json(scene, c));
-  json forces = json::array();
-  for (const VertexForce& f : step.forces) {
-    json j = pair_json(scene, step.contacts[f.contact].contact);
-    j["point_world"] = vec(f.point_W);
-    j["force_world"] = vec(f.force_W);
-    forces.push_back(j);
-  }
-  json torques = json::object();
-  for (int e = 0; e < scene.system.num_entities(); ++e) {
-    const Model& model = *scene.system.entity(e).model;
-    if (model.num_dofs() == 0 || e >= int(step.torques.size())) continue;
-    json t = json::object();
-    for (int k = 0; k < model.num_dofs(); ++k)
-      t[model.joints[model.dof_joints[k]].name] = step.torques[e][k];
-    torques[scene.system.entity(e).name] = t;
-  }
-  return {{"index", index},
-          {"action", step.action},
-          {"changed_contact", step.changed ? pair_json(scene, *step.changed) : json(nullptr)},
-          {"contacts", contacts},
-          {"stance", stance},
-          {"configuration", configuration_json(scene, step.q)},
-          {"forces", forces},
-          {"torques", torques},
-          {"solver",
-           {{"status", to_string(step.status)},
-            {"iterations", step.iterations},
-            {"time_ms", step.time_ms},
-            {"objective", step.objective}}}};
+  std::vector<Contact> touched;
+  for (const PlanContact& c : step.contacts) touched.push_back(c.contact);
+  json out = {{"index", index},
+              {"action", step.action},
+              {"changed_contact", step.changed ? pair_json(scene, *step.changed) : json(nullptr)},
+              {"contacts", contacts},
+              {"stance", stance},
+              {"configuration", configuration_json(scene, step.q)},
+              {"forces", forces_json(scene, touched, step.forces)},
+              {"torques", torques_json(scene, step.torques)},
+              {"solver",
+               {{"status", to_string(step.status)},
+                {"iterations", step.iterations},
+                {"time_ms", step.time_ms},
+                {"objective", step.objective}}}};
+  if (step.motion && previous) out["motion"] = motion_json(scene, *step.motion, previous->stance);
+  return out;
 }
 
 json ignored_pairs_json(const Scene& scene) {
@@ -155,7 +184,10 @@ json ignored_reasons_json(const Scene& scene) {
 std::string plan_to_json(const Plan& plan, const Scenario& s, const std::string& plan_path) {
   const fs::path base = fs::absolute(plan_path).parent_path();
   json out;
-  out["format"] = "stanceplan/plan@1";
+  // @2 adds the steps' motions; a plan without one stays readable by @1 readers.
+  const bool motion = std::any_of(plan.steps.begin(), plan.steps.end(),
+                                  [](const PlanStep& step) { return step.motion.has_value(); });
+  out["format"] = motion ? "stanceplan/plan@2" : "stanceplan/plan@1";
   if (!plan.partial.empty()) out["partial"] = {{"reaches_goal", false}, {"reason", plan.partial}};
   if (!plan.failed.empty()) out["failed"] = {{"reason", plan.failed}};
   out["scenario"] = relative_to(s.file, base);
@@ -177,7 +209,8 @@ std::string plan_to_json(const Plan& plan, const Scenario& s, const std::string&
   out["collision_pairs_ignored_reasons"] = ignored_reasons_json(s.scene);
   json steps = json::array();
   for (size_t i = 0; i < plan.steps.size(); ++i)
-    steps.push_back(step_json(s.scene, plan.steps[i], int(i)));
+    steps.push_back(
+        step_json(s.scene, plan.steps[i], int(i), i > 0 ? &plan.steps[i - 1] : nullptr));
   out["steps"] = steps;
   out["stats"] = {{"nodes_expanded", plan.stats.nodes_expanded},
                   {"solver_calls", plan.stats.solver_calls},

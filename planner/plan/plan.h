@@ -13,6 +13,29 @@
 
 namespace stanceplan {
 
+// How the motion into a step ended (docs/PLAN_FORMAT.md, `motion`): Solved when every sample is
+// projected and consecutive samples are within the spacing; otherwise the samples up to the
+// failure are kept, to be looked at, and `certify` refuses the step (check "motion status").
+enum class MotionStatus { Solved, ProjectionFailed, SpacingNotReached, EndsDisagree };
+const char* to_string(MotionStatus status);
+bool parse_motion_status(const std::string& text, MotionStatus* status);
+
+// One configuration of a motion between two steps, in static equilibrium on the contacts it
+// holds (the stance of the step the motion leaves, every contact loaded).
+struct MotionSample {
+  Eigen::VectorXd q;
+  std::vector<VertexForce> forces;       // VertexForce::contact indexes that stance's contacts()
+  std::vector<Eigen::VectorXd> torques;  // per entity (empty for entities without dofs)
+};
+
+// The quasi-static path from the previous step's configuration to this step's: the samples
+// strictly between the two (the steps themselves are its ends).
+struct StepMotion {
+  MotionStatus status = MotionStatus::Solved;
+  std::string message;  // why it failed ("" when solved)
+  std::vector<MotionSample> samples;
+};
+
 struct PlanStep {
   std::string action = "initial";  // initial | add | remove
   std::optional<Contact> changed;
@@ -25,6 +48,8 @@ struct PlanStep {
   int iterations = 0;
   double time_ms = 0.0;
   double objective = 0.0;
+  // The motion from the previous step to this one (absent for step 0 and in plans without motion).
+  std::optional<StepMotion> motion;
 };
 
 struct PlanStats {

@@ -12,13 +12,13 @@ int collision_link_of(const Scene& scene, SurfaceRef ref) {
   return scene.collision->find_link(ref.entity, scene.surfaces.get(ref).link);
 }
 
-// s1's frame in s2's frame under a placement (E10-E13): origin (x, y, 0), z1 = -z2, x1 at angle
-// theta from x2 in s2's plane, y1 = z1 x x1.
-Eigen::Isometry3d T_S2S1(const Placement& placement) {
+// s1's frame in s2's frame under a placement (E10-E13): origin (x, y, standoff), z1 = -z2, x1 at
+// angle theta from x2 in s2's plane, y1 = z1 x x1.
+Eigen::Isometry3d T_S2S1(const Placement& placement, double standoff) {
   const double c = std::cos(placement.theta), s = std::sin(placement.theta);
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() << c, s, 0.0, s, -c, 0.0, 0.0, 0.0, -1.0;
-  T.translation() = Eigen::Vector3d(placement.x, placement.y, 0.0);
+  T.translation() = Eigen::Vector3d(placement.x, placement.y, standoff);
   return T;
 }
 
@@ -70,7 +70,7 @@ Eigen::Isometry3d pinned_link_pose(const Scene& scene, const ContactTask& task, 
                                    const Eigen::Isometry3d& T_WL_other) {
   const Surface& s1 = scene.surfaces.get(task.contact.s1);
   const Surface& s2 = scene.surfaces.get(task.contact.s2);
-  const Eigen::Isometry3d T = T_S2S1(*task.placement);
+  const Eigen::Isometry3d T = T_S2S1(*task.placement, task.standoff);
   if (moving == task.contact.s1) return T_WL_other * s2.T_LS * T * s1.T_LS.inverse();
   return T_WL_other * s1.T_LS * T.inverse() * s2.T_LS.inverse();
 }

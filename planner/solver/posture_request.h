@@ -22,6 +22,10 @@ struct ContactTask {
   std::optional<Placement> placement;
   // Optional E25 target for a free placement (obj4: pull s1's origin towards (x, y) of s2's plane).
   std::optional<Placement> placement_target;
+  // E9 with an offset: s1's origin this far above s2's plane, along s2's normal (m). Only for an
+  // unloaded contact with a fixed placement: a link held clear of its surface (planner/motion/,
+  // leaving or approaching a contact along the normal). 0: touching.
+  double standoff = 0.0;
   // Warm start of a loaded contact's forces: the force by s2 on s1 at each vertex of s1 (world
   // frame), e.g. the parent node's. Empty: an even share of the weight (PostureNlp).
   std::vector<Eigen::Vector3d> force_guess_W;

@@ -423,6 +423,9 @@ void PostureSolver::validate(const PostureRequest& request) const {
           " is in two contacts (a contact's smaller surface s1 is in no other)");
     smaller.push_back(r1);
     larger.push_back(r2);
+    if (task.standoff != 0.0 && (task.loaded || !task.placement || !std::isfinite(task.standoff)))
+      throw std::invalid_argument("contact " + scene_.surfaces.id(system, r1) +
+                                  ": a standoff needs an unloaded contact with a fixed placement");
     const Surface& s1 = scene_.surfaces.get(task.contact.s1);
     const Surface& s2 = scene_.surfaces.get(task.contact.s2);
     if (task.contact.s1.entity == task.contact.s2.entity && s1.link == s2.link)

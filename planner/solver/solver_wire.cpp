@@ -92,6 +92,7 @@ std::string serialize(const PostureRequest& request) {
     w.pod<uint8_t>(t.loaded);
     w.placement(t.placement);
     w.placement(t.placement_target);
+    w.pod<double>(t.standoff);
     w.pod<uint64_t>(t.force_guess_W.size());
     for (const Eigen::Vector3d& f : t.force_guess_W) w.vec3(f);
   }
@@ -115,6 +116,7 @@ PostureRequest deserialize_request(const std::string& bytes) {
     t.loaded = r.pod<uint8_t>();
     t.placement = r.placement();
     t.placement_target = r.placement();
+    t.standoff = r.pod<double>();
     const auto guesses = r.pod<uint64_t>();
     for (uint64_t k = 0; k < guesses; ++k) t.force_guess_W.push_back(r.vec3());
     request.contacts.push_back(t);

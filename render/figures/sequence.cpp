@@ -103,6 +103,15 @@ Image SequenceRenderer::render_step(int step, const std::optional<std::string>& 
                           caption ? *caption : step_caption(plan_, step));
 }
 
+Image SequenceRenderer::render_motion_sample(int step, int sample, const std::string& caption) {
+  const PlanStep& s = plan_.plan.steps.at(step);
+  std::vector<PlanContact> held;
+  for (const Contact& c : plan_.plan.steps.at(step - 1).stance.contacts())
+    held.push_back({c, true});
+  const MotionSample& m = s.motion->samples.at(sample);
+  return renderer_.render(plan_.scene, m.q, held, m.forces, camera_, caption);
+}
+
 std::vector<int> key_steps(int num_steps, int max_panels) {
   std::vector<int> steps;
   if (num_steps <= 0) return steps;

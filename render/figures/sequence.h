@@ -37,6 +37,9 @@ class SequenceRenderer {
   const Camera& camera() const { return camera_; }
   // The step's image with its caption (step_caption) unless `caption` is given.
   Image render_step(int step, const std::optional<std::string>& caption = std::nullopt);
+  // Sample `sample` of the motion into `step` (PlanStep::motion): the previous step's stance,
+  // every contact loaded, with the sample's forces.
+  Image render_motion_sample(int step, int sample, const std::string& caption);
   std::vector<std::string> take_warnings() { return renderer_.take_warnings(); }
 
  private:

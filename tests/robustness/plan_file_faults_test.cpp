@@ -177,6 +177,37 @@ TEST(PlanFileFaults, UnknownSurfaceIdsAndEntitiesAreNamed) {
             "steps[0].action: expected initial, add or remove, found \"jump\"");
 }
 
+// Format @2: the motion into a step (docs/PLAN_FORMAT.md, `motion`).
+TEST(PlanFileFaults, MotionFieldsAreNamed) {
+  EXPECT_EQ(field_error([](json& p) { p["format"] = "stanceplan/plan@3"; }, "format_3"),
+            "format: expected \"stanceplan/plan@1\" or \"stanceplan/plan@2\", found "
+            "\"stanceplan/plan@3\"");
+  const auto with_motion = [](const json& motion) {
+    return [motion](json& p) {
+      p["format"] = "stanceplan/plan@2";
+      p["steps"].push_back(p["steps"][0]);
+      p["steps"][1]["motion"] = motion;
+    };
+  };
+  EXPECT_EQ(field_error(
+                [](json& p) {
+                  p["steps"][0]["motion"] = {{"status", "solved"}, {"samples", json::array()}};
+                },
+                "motion_step_0"),
+            "steps[0].motion: step 0 has no motion into it");
+  EXPECT_EQ(
+      field_error(with_motion({{"status", "flying"}, {"samples", json::array()}}), "motion_status"),
+      "steps[1].motion.status: expected solved, projection_failed, spacing_not_reached or "
+      "ends_disagree, found \"flying\"");
+  EXPECT_EQ(field_error(with_motion({{"status", "solved"}}), "motion_samples"),
+            "steps[1].motion.samples: missing");
+  EXPECT_EQ(field_error(with_motion({{"status", "solved"}, {"samples", {{{"forces", 1}}}}}),
+                        "motion_sample"),
+            "steps[1].motion.samples[0].configuration: missing");
+  EXPECT_EQ(error_of(with_motion({{"status", "solved"}, {"samples", json::array()}}), "motion_ok"),
+            "");
+}
+
 TEST(PlanFileFaults, TheCertifyCommandExitsOneOnEveryFault) {
   std::string path;
   error_of([](json& p) { p["steps"][0]["contacts"][0]["fixed"] = 1; }, "fixed_number", &path);

@@ -53,6 +53,7 @@ class ContactGeometryBlock : public ConstraintBlock {
   bool point_ = false;
   double radius_ = 0.0;
   Placement placement_;
+  double standoff_ = 0.0;  // E9 bound: s1 held this far above s2 (ContactTask::standoff)
   std::vector<int> columns_;
 };
 

@@ -31,6 +31,7 @@ ContactGeometryBlock::ContactGeometryBlock(const NlpState& state, int task)
   const Surface& s1 = state.scene.surfaces.get(t.contact.s1);
   point_ = s1.is_point();
   radius_ = s1.radius;
+  standoff_ = t.standoff;
   const ContactConstants& c = state.constants[task];
   append_link_columns(state.scene.system, c.e1, c.l1, &columns_);
   append_link_columns(state.scene.system, c.e2, c.l2, &columns_);
@@ -41,10 +42,12 @@ void ContactGeometryBlock::bounds(Eigen::Ref<Eigen::VectorXd> lower,
                                   Eigen::Ref<Eigen::VectorXd> upper) const {
   lower.setZero();
   upper.setZero();
-  if (point_)
-    lower[row_e9()] = upper[row_e9()] = radius_;
-  else
-    lower[3] = -kInf;  // z1 . z2 <= 0: the opposed branch of E8
+  if (point_) {
+    lower[row_e9()] = upper[row_e9()] = radius_ + standoff_;  // E9: the centre r above the plane
+  } else {
+    lower[2] = upper[2] = standoff_;  // E9, held above the plane when the task says so
+    lower[3] = -kInf;                 // z1 . z2 <= 0: the opposed branch of E8
+  }
   if (!fixed_) return;
   lower[row_e10()] = upper[row_e10()] = placement_.x;
   lower[row_e11()] = upper[row_e11()] = placement_.y;

@@ -26,6 +26,7 @@ TEST(MainJob, HeadlessWritesEverythingIntoTheOutputFolder) {
   EXPECT_THAT(r.out, HasSubstr("everything goes to " + out.string()));
   EXPECT_THAT(r.out, HasSubstr("all checks passed"));
   EXPECT_THAT(r.out, HasSubstr("main job done, in " + out.string()));
+  EXPECT_THAT(r.out, HasSubstr("motion: 22 steps, "));  // on by default (--no-motion: off)
   for (const char* file :
        {"plan.json", "events.jsonl", "strip.png", "sequence.gif", "steps/step_000.png"})
     EXPECT_TRUE(fs::exists(out / file)) << file;

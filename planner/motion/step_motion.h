@@ -1,0 +1,85 @@
+#pragma once
+// The quasi-static motion between two consecutive plan steps (docs/METHOD.md section 7, "Motion
+// between stances"). With sigma the stance reached by the first step (touched by both steps'
+// configurations: an add step touches its new stance, a remove step the stance before it), the
+// path from q_a to q_b keeps every contact of sigma at its placement and loaded, and is made of
+//   lift:     when the first step removed a contact, its s1 leaves s2 along s2's normal up to the
+//             clearance (E9 with a standoff, the placement held: planner/solver ContactTask);
+//   travel:   the configurations interpolated between the ends of lift and approach (joints
+//             linearly, roots by slerp: configuration_path.h) as the E22 reference q_ref;
+//   approach: when the second step adds a contact, the lift of its s1 from q_b, run backwards.
+// Each sample is projected into F_sigma by the IK-statics program (E6-E20, warm started from the
+// previous sample: one PostureSolver, one request reused); where a projection fails or lands
+// farther than the spacing from its predecessor, the interpolation step is halved (bisection).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planner/motion/motion_options.h"
+#include "planner/motion/sample_spacing.h"
+#include "planner/plan/plan.h"
+#include "planner/solver/posture_solver.h"
+
+namespace stanceplan {
+
+struct StepMotionResult {
+  StepMotion motion;  // status, message, samples strictly between the two steps
+  int solves = 0;     // IK-statics solves, failed ones included
+  double time_ms = 0.0;
+};
+
+class StepMotionPlanner {
+ public:
+  StepMotionPlanner(const Scene& scene, const SolverOptions& solver, MotionOptions options);
+
+  // The motion from step `a` to the next step `b` of a plan (b.motion is not read).
+  StepMotionResult plan(const PlanStep& a, const PlanStep& b);
+
+  const MotionOptions& options() const { return options_; }
+
+ private:
+  // A contact of the moving link held off its surface: its placement goes from `from` to `to`
+  // and its height above s2 from `h_from` to `h_to`.
+  struct LinkPath {
+    ContactTask task;  // unloaded
+    Placement from, to;
+    double h_from = 0.0, h_to = 0.0;
+    double length() const;  // of the path of s1's origin (m)
+  };
+
+  // One piece of the path: the reference runs from q_start to q_ref_end; `end` is the fixed
+  // configuration the last sample must join (nullptr: the projection at s = 1 is the last sample).
+  struct Segment {
+    const char* name = "";  // lift, travel or approach (in messages)
+    const Eigen::VectorXd* q_start = nullptr;
+    const Eigen::VectorXd* q_ref_end = nullptr;
+    const Eigen::VectorXd* end = nullptr;
+    // The moving link held off its surface (E9 with a standoff, E10-E13 at a placement), both
+    // interpolated along s in [0, 1]; nullopt: the link is free (E20 keeps it clear).
+    std::optional<LinkPath> link;
+  };
+
+  bool set_up(const PlanStep& a, const PlanStep& b, StepMotion* motion);
+  void plan_segments(const PlanStep& a, const PlanStep& b, StepMotion* motion);
+  std::string describe(const SpacingMeasure& m) const;
+  bool run_segment(const Segment& segment, std::vector<MotionSample>* samples, StepMotion* motion);
+  // Projects the sample at s of the segment, warm started from q_prev (forces from `previous`
+  // when given).
+  PostureResult project(const Segment& segment, double s, const Eigen::VectorXd& q_prev,
+                        const MotionSample* previous);
+  ContactTask lift_task(const Contact& contact, const Eigen::VectorXd& q) const;
+  // s1 straight up from its placement at q to the clearance.
+  LinkPath lift_path(const Contact& contact, const Eigen::VectorXd& q) const;
+
+  const Scene& scene_;
+  PostureSolver solver_;
+  MotionOptions options_;
+  int held_ = 0;            // request_.contacts[0, held_): sigma, loaded, placements fixed
+  PostureRequest request_;  // reused for every sample
+  Eigen::VectorXd q_ref_;   // workspace of the interpolation
+  std::optional<SampleSpacing> spacing_;  // surfaces of both steps' contacts
+  int solves_ = 0;
+};
+
+}  // namespace stanceplan

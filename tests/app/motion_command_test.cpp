@@ -1,0 +1,41 @@
+// `stanceplan motion PLAN.json` (app/motion_command.h): adds the motion to a plan file without
+// one, certified; writes the trajectory CSV; `render --gif` then plays the motion.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "planner/io/plan_writer.h"
+#include "planner/util/text_file.h"
+#include "tests/support/cli.h"
+#include "tests/support/forward_step.h"
+
+namespace stanceplan {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+TEST(MotionCommand, AddsTheCertifiedMotionToAPlanFileAndExportsItAndPlaysIt) {
+  const test::ForwardStep fs = test::forward_step_plan();
+  const fs::path dir = test::temp_dir("motion_command");
+  const std::string plan = (dir / "plan.json").string(), moved = (dir / "moved.json").string();
+  write_plan(fs.plan, fs.scenario, plan);
+  const test::CliResult r =
+      test::run_cli({"motion", plan, "--out", moved, "--csv", (dir / "csv").string()});
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("motion: 2 steps, "));
+  EXPECT_THAT(r.out, HasSubstr("wrote " + moved + " (certified, with motion)"));
+  EXPECT_EQ(nlohmann::json::parse(read_text_file(moved))["format"], "stanceplan/plan@2");
+  EXPECT_TRUE(fs::exists(dir / "csv" / "robot.csv"));
+  EXPECT_EQ(test::run_cli({"certify", moved}).code, 0);
+  const test::CliResult gif =
+      test::run_cli({"render", moved, "--gif", (dir / "moved.gif").string(), "--size", "160x90"});
+  ASSERT_EQ(gif.code, 0) << gif.err;
+  EXPECT_THAT(gif.out, HasSubstr("render: animated GIF of "));
+  EXPECT_THAT(gif.out, ::testing::Not(HasSubstr("GIF of 3 frames")));  // samples between steps
+}
+
+}  // namespace
+}  // namespace stanceplan
