@@ -10,6 +10,8 @@
 #include "planner/util/input_error.h"
 #include "tests/support/paths.h"
 
+#include "tests/support/surface_file_fixture.h"
+
 namespace stanceplan {
 namespace {
 
@@ -45,31 +47,7 @@ TEST(PointSurface, NegativeOrNonFiniteValuesAreRefused) {
   EXPECT_TRUE(make_point_surface("tip", 0, "l", Eigen::Vector3d::Zero(), 0.0, &s, &error));
 }
 
-class PointSurfaceFile : public ::testing::Test {
- protected:
-  void SetUp() override {
-    model_ = load_urdf(test::source_path("tests/data/link_faces/faces.urdf"));
-    path_ =
-        (test::temp_dir("point_surfaces") /
-         (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".yaml"))
-            .string();
-  }
-  std::vector<Surface> load(const std::string& surfaces) {
-    std::ofstream(path_) << "format: stanceplan/surfaces@1\nsurfaces:\n" << surfaces;
-    return load_surface_file(path_, model_);
-  }
-  // The message of the InputError the surfaces (from line 3 of the file) raise.
-  std::string error_of(const std::string& surfaces) {
-    try {
-      load(surfaces);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
-  Model model_;
-  std::string path_;
-};
+class PointSurfaceFile : public test::SurfaceFileTest {};
 
 TEST_F(PointSurfaceFile, LoadsBesideAPolygon) {
   const std::vector<Surface> s = load(

@@ -13,36 +13,14 @@
 #include "tests/support/paths.h"
 #include "tests/support/test_models.h"
 
+#include "tests/support/surface_file_fixture.h"
+
 namespace stanceplan {
 namespace {
 
 using ::testing::HasSubstr;
 
-class SurfaceFileFields : public ::testing::Test {
- protected:
-  void SetUp() override {
-    model_ = load_urdf(test::source_path("tests/data/link_faces/faces.urdf"));
-    path_ =
-        (test::temp_dir("surface_fields") /
-         (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".yaml"))
-            .string();
-  }
-  std::vector<Surface> load(const std::string& surfaces) {
-    std::ofstream(path_) << "format: stanceplan/surfaces@1\nsurfaces:\n" << surfaces;
-    return load_surface_file(path_, model_);
-  }
-  // The message of the InputError the surfaces (from line 3 of the file) raise.
-  std::string error_of(const std::string& surfaces) {
-    try {
-      load(surfaces);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
-  Model model_;
-  std::string path_;
-};
+class SurfaceFileFields : public test::SurfaceFileTest {};
 
 TEST_F(SurfaceFileFields, UnknownKeysAreRefusedWithTheirLine) {
   EXPECT_EQ(error_of("  - name: sole\n"
