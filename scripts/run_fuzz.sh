@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/, clang, -DSTANCEPLAN_FUZZ=ON) and runs each one in turn for
+# Builds the libFuzzer targets (fuzz/, clang -O1, -DSTANCEPLAN_FUZZ=ON) and runs each one in turn for
 # FUZZ_SECONDS (default 60) on one core, starting from the seed corpus made at configure time.
 # New corpus entries go to FUZZ_BUILD_DIR/fuzz/corpus-out/TARGET (not into the source tree); a
 # crash leaves crash-* / leak-* / oom-* / timeout-* in FUZZ_BUILD_DIR/fuzz/artifacts/ and fails
@@ -15,7 +15,7 @@ seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(scenario surfaces plan urdf srdf)
 
-CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DSTANCEPLAN_FUZZ=ON \
+CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DSTANCEPLAN_FUZZ=ON "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" \
   -DSTANCEPLAN_BUILD_TESTS=OFF -DSTANCEPLAN_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build "$build_dir" -j "${JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}"
 
