@@ -92,6 +92,89 @@ void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::o
       << " s after it\n";
 }
 
+// The scenario's search options with the command line's overrides.
+SearchOptions session_search_options(const Scenario& scenario, const PlanOptions& options) {
+  SearchOptions search = scenario.search;
+  if (options.threads) search.threads = *options.threads;
+  if (options.time_limit) search.time_limit_s = *options.time_limit;
+  if (options.max_nodes) search.max_nodes = *options.max_nodes;
+  return search;
+}
+
+// One line per search event (--verbose), or the progress line on a terminal.
+std::function<void(const SearchEvent&)> event_reporter(const Scenario& scenario,
+                                                       const PlanOptions& options,
+                                                       std::ostream& err, int& solver_calls) {
+  const bool live = isatty(STDERR_FILENO) && &err == &std::cerr;
+  const int milestones = static_cast<int>(scenario.milestones.size());
+  return [&scenario, &err, &solver_calls, verbose = options.verbose, live,
+          milestones](const SearchEvent& e) {
+    if (e.kind == SearchEventKind::Candidate) ++solver_calls;
+    if (verbose) {
+      err << "[" << e.number << "] " << to_string(e.kind) << " node " << e.node << " "
+          << describe(scenario.scene, e.stance);
+      if (e.kind == SearchEventKind::Candidate)
+        err << (e.candidate_case == CandidateCase::Add      ? " add "
+                : e.candidate_case == CandidateCase::Remove ? " remove "
+                                                            : " ")
+            << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " ("
+            << std::fixed << std::setprecision(1) << e.time_ms << " ms, " << e.iterations
+            << " iterations)";
+      err << "\n";
+    } else if (live) {
+      err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones
+          << "  solver calls " << solver_calls << "   " << std::flush;
+    }
+  };
+}
+
+// Runs the search to its end on the session's thread, reporting its events here; returns their
+// number. SIGINT / SIGTERM cancel it.
+size_t run_search(PlanSession& session, std::optional<SnapshotWriter>& snapshots,
+                  const Scenario& scenario, const PlanOptions& options, std::ostream& err) {
+  int solver_calls = 0;
+  size_t events = 0;
+  const auto print = event_reporter(scenario, options, err, solver_calls);
+  {
+    CancelOnSignal on_signal(session);
+    // The solver workers were forked when the session was made, before any other thread.
+    session.start();
+    if (snapshots) snapshots->start();
+    follow(session, [&](const SearchEvent& e) {
+      ++events;
+      print(e);
+    });
+  }
+  if (isatty(STDERR_FILENO) && &err == &std::cerr && !options.verbose) err << "\n";
+  if (const std::exception_ptr error = session.error()) std::rethrow_exception(error);
+  return events;
+}
+
+// The snapshot writer's backlog (drawn now if it fell behind), its summary and, for a written
+// plan, the final sequence beside the snapshots.
+void finish_snapshots(SnapshotWriter& snapshots, const Scenario& scenario, const Plan& plan,
+                      int written, const PlanOptions& options, std::ostream& out,
+                      std::ostream& err) {
+  const SnapshotStats stats = snapshots.finish();
+  out << "snapshots: " << stats.images << " images of " << stats.events << " search events in "
+      << options.snapshots << " (index " << SnapshotWriter::kIndexFile << ")\n";
+  if (options.stats) print_snapshot_stats(stats, options.snapshots, out);
+  if (written == kExitSuccess) render_final_sequence(scenario, plan, options.snapshots, out, err);
+}
+
+// Why there is no plan: the search's status, the closest stance and the goal's.
+void report_no_plan(const SearchResult& result, const Scenario& scenario, std::ostream& err) {
+  err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message
+      << "\n";
+  if (result.closest_node >= 0)
+    err << "  closest stance to the goal: "
+        << describe(scenario.scene, result.tree[result.closest_node].stance()) << "\n";
+  err << "  goal stance: " << describe(scenario.scene, scenario.stance(scenario.goal_stance))
+      << "\n";
+  err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls
+      << " solver calls, " << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
+}
+
 }  // namespace
 
 // --partial: the steps from the root to the node closest to the goal, marked partial in the file
@@ -129,46 +212,11 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
     err << "stanceplan: no plan: " << guide->message << "\n";
     return planned;
   }
-  SearchOptions search = scenario.search;
-  if (options.threads) search.threads = *options.threads;
-  if (options.time_limit) search.time_limit_s = *options.time_limit;
-  if (options.max_nodes) search.max_nodes = *options.max_nodes;
-  PlanSession session(scenario, search);
+  PlanSession session(scenario, session_search_options(scenario, options));
   std::optional<SnapshotWriter> snapshots;
   if (!options.snapshots.empty())
     snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});
-  const bool live = isatty(STDERR_FILENO) && &err == &std::cerr;
-  const int milestones = static_cast<int>(scenario.milestones.size());
-  int solver_calls = 0;
-  size_t events = 0;
-  auto report = [&](const SearchEvent& e) {
-    ++events;
-    if (e.kind == SearchEventKind::Candidate) ++solver_calls;
-    if (options.verbose) {
-      err << "[" << e.number << "] " << to_string(e.kind) << " node " << e.node << " "
-          << describe(scenario.scene, e.stance);
-      if (e.kind == SearchEventKind::Candidate)
-        err << (e.candidate_case == CandidateCase::Add      ? " add "
-                : e.candidate_case == CandidateCase::Remove ? " remove "
-                                                            : " ")
-            << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " ("
-            << std::fixed << std::setprecision(1) << e.time_ms << " ms, " << e.iterations
-            << " iterations)";
-      err << "\n";
-    } else if (live) {
-      err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones
-          << "  solver calls " << solver_calls << "   " << std::flush;
-    }
-  };
-  {
-    CancelOnSignal on_signal(session);
-    // The solver workers were forked when the session was made, before any other thread.
-    session.start();
-    if (snapshots) snapshots->start();
-    follow(session, report);
-  }
-  if (live && !options.verbose) err << "\n";
-  if (const std::exception_ptr error = session.error()) std::rethrow_exception(error);
+  const size_t events = run_search(session, snapshots, scenario, options, err);
   planned.result = *session.result();
   const SearchResult& result = *planned.result;
   if (options.stats) print_search_stats(result, events, out);
@@ -185,26 +233,11 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
         << result.nodes_expanded << " nodes expanded, " << result.solver_calls << " solver calls, "
         << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
   }
-  if (snapshots) {  // the backlog, if the writer fell behind, is drawn now
-    const SnapshotStats stats = snapshots->finish();
-    out << "snapshots: " << stats.images << " images of " << stats.events << " search events in "
-        << options.snapshots << " (index " << SnapshotWriter::kIndexFile << ")\n";
-    if (options.stats) print_snapshot_stats(stats, options.snapshots, out);
-    if (written == kExitSuccess)
-      render_final_sequence(scenario, result.plan, options.snapshots, out, err);
-  }
+  if (snapshots) finish_snapshots(*snapshots, scenario, result.plan, written, options, out, err);
   planned.code = kExitFailed;
   if (found && written != kExitSuccess) return planned;  // why: on err (write_certified_plan)
   if (!found) {
-    err << "stanceplan: no plan found (" << to_string(result.status) << "): " << result.message
-        << "\n";
-    if (result.closest_node >= 0)
-      err << "  closest stance to the goal: "
-          << describe(scenario.scene, result.tree[result.closest_node].stance()) << "\n";
-    err << "  goal stance: " << describe(scenario.scene, scenario.stance(scenario.goal_stance))
-        << "\n";
-    err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls
-        << " solver calls, " << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
+    report_no_plan(result, scenario, err);
     if (options.partial) write_partial_plan(result, scenario, options.out, err);
     return planned;
   }
