@@ -16,11 +16,12 @@
 //  - a new contact whose surface x must touch a partner that never moves (the floor, a tread, the
 //    desk) farther from a kept contact's surface y than any posture can put x from y, when that
 //    kept contact's partner never moves either (reach_bound.h: RBPRM's reachability condition,
-//    with the sum of the link lengths between x's and y's links; exact): a hand on a tread 1.6 m
-//    above the standing soles. It cannot prune a contact with a moving partner (an object, another
-//    robot, the robot itself), nor through a chain of contacts (a hand that the other hand could
-//    bring closer by moving the body it holds), and the bound, being the stretched chain's, is
-//    loose for bent limbs: it prunes what no posture reaches, not what no balanced posture does;
+//    with the sum of the link lengths between x's and y's links; exact): the humanoid's free sole
+//    on a tread 2.85 m from the sole it stands on (two stretched legs reach 2.10 m). It cannot
+//    prune a contact with a moving partner (an object, another robot, the robot itself), nor
+//    through a chain of contacts (a hand that the other hand could bring closer by moving the body
+//    it holds), and the bound, being the stretched chain's, is loose for bent limbs: it prunes
+//    what no posture reaches, not what no balanced posture does;
 //  - removing the last contact that supports a floating body with mass: no equilibrium is
 //    possible without support (exact), and fixed contacts are never removed (docs/METHOD.md);
 //  - removing a contact that leaves such a body fewer than SearchOptions::min_contacts (option);
