@@ -149,6 +149,30 @@ bool normals_cannot_meet(const Scene& scene, const std::vector<ModelData>& data,
   return false;
 }
 
+// RBPRM's reachability condition, made sound (reach_bound.h). In case 1 every contact of the
+// stance keeps its placement, so a kept contact y-y' whose partner y' never moves holds y where it
+// is at the node. The new contact's surface x must touch its partner x'; when x' never moves
+// either, a point of x lies on x''s polygon, and every point of x is within reach(x, y) of every
+// point of y: a partner farther than that from y can never be touched, whatever the posture.
+constexpr double kReachTolerance = 1e-3;  // m, above the solver's tolerance on E9-E11
+
+bool beyond_reach(const Scene& scene, const std::vector<ModelData>& data, const Contact& c,
+                  const Stance& stance, ReachTable& reach) {
+  const auto is_static = [&](SurfaceRef r) {
+    return link_is_static(scene, r.entity, scene.surfaces.get(r).link);
+  };
+  for (const auto& [x, x_partner] : {std::pair(c.s1, c.s2), std::pair(c.s2, c.s1)}) {
+    if (is_static(x) || !is_static(x_partner)) continue;
+    for (const Contact& k : stance.contacts())
+      for (const auto& [y, y_partner] : {std::pair(k.s1, k.s2), std::pair(k.s2, k.s1)}) {
+        if (y.entity != x.entity || is_static(y) || !is_static(y_partner)) continue;
+        if (surface_gap(scene, data, x_partner, y) > reach.between(x, y) + kReachTolerance)
+          return true;
+      }
+  }
+  return false;
+}
+
 }  // namespace
 
 bool link_is_static(const Scene& scene, int entity, int link) {
@@ -184,8 +208,8 @@ double surface_gap(const Scene& scene, const std::vector<ModelData>& data, Surfa
 
 std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,
                                             const Stance& stance, const Stance& goal,
-                                            const SearchOptions& options,
-                                            NormalAngleTable* angles) {
+                                            const SearchOptions& options, NormalAngleTable* angles,
+                                            ReachTable* reach) {
   std::vector<Candidate> out;
   // Adj-: remove one contact (case 2).
   for (int i = 0; i < stance.size(); ++i) {
@@ -231,6 +255,7 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
       if (rigidly_incompatible(scene, data, c, stance)) continue;
       if (angles != nullptr && normals_cannot_meet(scene, data, c, stance, *angles)) continue;
       if (surface_gap(scene, data, c.s1, c.s2) > options.contact_reach) continue;
+      if (reach != nullptr && beyond_reach(scene, data, c, stance, *reach)) continue;
       out.push_back({true, c});
     }
   return out;

@@ -13,6 +13,15 @@
 //  - the same for two links of one robot joined by joints, when the joint limits between them
 //    cannot give their normals the angle the partners' normals make (normal_angle_range.h;
 //    exact): a knee flat on the floor while the same leg's sole is flat on the floor or a tread;
+//  - a new contact whose surface x must touch a partner that never moves (the floor, a tread, the
+//    desk) farther from a kept contact's surface y than any posture can put x from y, when that
+//    kept contact's partner never moves either (reach_bound.h: RBPRM's reachability condition,
+//    with the sum of the link lengths between x's and y's links; exact): the humanoid's free sole
+//    on a tread 2.85 m from the sole it stands on (two stretched legs reach 2.10 m). It cannot
+//    prune a contact with a moving partner (an object, another robot, the robot itself), nor
+//    through a chain of contacts (a hand that the other hand could bring closer by moving the body
+//    it holds), and the bound, being the stretched chain's, is loose for bent limbs: it prunes
+//    what no posture reaches, not what no balanced posture does;
 //  - removing the last contact that supports a floating body with mass: no equilibrium is
 //    possible without support (exact), and fixed contacts are never removed (docs/METHOD.md);
 //  - removing a contact that leaves such a body fewer than SearchOptions::min_contacts (option);
@@ -28,6 +37,7 @@
 #include "planner/model/model_data.h"
 #include "planner/scene/scene.h"
 #include "planner/search/normal_angle_range.h"
+#include "planner/search/reach_bound.h"
 #include "planner/search/search_options.h"
 
 namespace stanceplan {
@@ -39,11 +49,13 @@ struct Candidate {
 
 // `data` holds forward kinematics of every entity at the node's configuration. `goal` supplies the
 // orientation (which surface is s1) and the bilateral/fixed tags of contacts it contains.
-// `angles` (kept by the caller across calls) enables the normal-angle rule; null skips it.
+// `angles` and `reach` (kept by the caller across calls) enable the normal-angle and the reach
+// rules; null skips them.
 std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,
                                             const Stance& stance, const Stance& goal,
                                             const SearchOptions& options,
-                                            NormalAngleTable* angles = nullptr);
+                                            NormalAngleTable* angles = nullptr,
+                                            ReachTable* reach = nullptr);
 
 // Distance between two surfaces' polygons in the world (0 when they touch or cross).
 double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,

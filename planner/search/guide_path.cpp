@@ -16,6 +16,15 @@ double GuidePath::distance_to(const Eigen::VectorXd& q, int t) const {
   return distance(q, milestones_.at(t), t < int(masks_.size()) ? &masks_[t] : nullptr);
 }
 
+Eigen::VectorXd GuidePath::posture_near(const Eigen::VectorXd& q, int t) const {
+  const Eigen::VectorXd& m = milestones_.at(t);
+  if (t >= int(masks_.size()) || masks_[t].size() != q.size()) return m;
+  Eigen::VectorXd out = q;
+  for (Eigen::Index i = 0; i < q.size(); ++i)
+    if (masks_[t][i] > 0.0) out[i] = m[i];
+  return out;
+}
+
 double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
                            const Eigen::VectorXd* mask) const {
   auto stated = [&](int i) { return mask == nullptr || (*mask)[i] > 0.0; };

@@ -26,6 +26,9 @@ class GuidePath {
   // Weighted distance from q to milestone t (root position, root rotation angle, joints) over the
   // entries the milestone states.
   double distance_to(const Eigen::VectorXd& q, int t) const;
+  // q with every entry milestone t states taken from it: the guide's posture near q (a coarse
+  // guide states base positions only: q's posture carried to the milestone's base).
+  Eigen::VectorXd posture_near(const Eigen::VectorXd& q, int t) const;
 
  private:
   const System& system_;

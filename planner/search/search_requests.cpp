@@ -10,6 +10,7 @@
 #include "planner/search/search_event_builders.h"
 #include "planner/search/search_run.h"
 #include "planner/search/step_target.h"
+#include "planner/search/support_share.h"
 
 namespace stanceplan {
 namespace {
@@ -58,19 +59,41 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   expanded_for_[size_t(n)] = t_;
   const SearchNode& node = tree_[size_t(n)];
   if (!search_.publish(expansion_event(node, t_, int(tree_.size())))) return std::nullopt;
-  std::vector<Attempt> batch;
   const auto data = system_kinematics(problem_.scene.system, node.q());
-  for (const Candidate& c : enumerate_candidates(problem_.scene, data, node.stance(), goal_,
-                                                 options_for_milestone(t_), &angles_)) {
+  std::vector<Candidate> candidates = enumerate_candidates(
+      problem_.scene, data, node.stance(), goal_, options_for_milestone(t_), &angles_, &reach_);
+  std::vector<double> shares(candidates.size(), 0.0);
+  // The order matters only to lazy expansion; all at once, the batch keeps Algorithm 1's order.
+  if (options_.order_candidates && options_.expansion_batch > 0) {
+    const Eigen::VectorXd q_guide =
+        guide_.size() > 0 ? guide_.posture_near(node.q(), t_) : node.q();
+    shares = order_by_support_share(problem_.scene,
+                                    system_kinematics(problem_.scene.system, q_guide), candidates);
+  }
+  pending_.resize(tree_.size());
+  pending_[size_t(n)].clear();
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const Candidate& c = candidates[i];
     if (undoes_last_step(node, c)) continue;
     // Failed from the same situation before: solved only when backtracking (failure_memo.h).
     const bool repeated = options_.defer_repeated_failures &&
                           failures_.seen(problem_.scene, data, node.q(), node.stance(), c);
     if (repeated)
-      retries_.push_back({n, c, 0});
+      retries_.push_back({n, c, 0, shares[i]});
     else
-      batch.push_back({n, c, 0});
+      pending_[size_t(n)].push_back({n, c, 0, shares[i]});
   }
+  return take_pending(n);
+}
+
+std::vector<StanceSearch::Attempt> StanceSearch::Run::take_pending(int n) {
+  std::deque<Attempt>& pending = pending_[size_t(n)];
+  const size_t count = options_.expansion_batch > 0
+                           ? std::min(pending.size(), size_t(options_.expansion_batch))
+                           : pending.size();
+  std::vector<Attempt> batch(pending.begin(), pending.begin() + long(count));
+  pending.erase(pending.begin(), pending.begin() + long(count));
+  if (!pending.empty()) open_.push_back(n);
   return batch;
 }
 

@@ -114,16 +114,37 @@ std::optional<SearchResult> StanceSearch::Run::next_batch(std::vector<Attempt>& 
     batch.assign(urgent_.begin(), urgent_.end());
     urgent_.clear();
   } else if (!open_.empty()) {
-    std::optional<std::vector<Attempt>> expanded = expand(pop_best_open());
+    const int n = pop_best_open();
+    // Lazy expansion: a node expanded for the targeted milestone goes on with its candidates;
+    // for an earlier one (or never), it is expanded (again: its case-1 candidates aim anew).
+    if (n < int(pending_.size()) && !pending_[size_t(n)].empty() &&
+        expanded_for_[size_t(n)] == t_) {
+      batch = take_pending(n);
+      return std::nullopt;
+    }
+    std::optional<std::vector<Attempt>> expanded = expand(n);
     if (!expanded) return give_up(PlanStatus::Cancelled, "cancelled");
     batch = std::move(*expanded);
   } else if (!retries_.empty()) {
-    batch.assign(retries_.begin(), retries_.end());
-    retries_.clear();
+    take_retries(batch);
   } else if (!reopen_stale(expanded_for_, t_, open_)) {
     return give_up(PlanStatus::Exhausted, "every reachable stance was tried");
   }
   return std::nullopt;
+}
+
+// Backtracking with lazy expansion: the retries most likely to carry their share first
+// (support_share.h; ties in the order they failed), options_.expansion_batch at a time; every one
+// at once when expansion_batch is 0.
+void StanceSearch::Run::take_retries(std::vector<Attempt>& batch) {
+  size_t count = retries_.size();
+  if (options_.expansion_batch > 0) {
+    std::stable_sort(retries_.begin(), retries_.end(),
+                     [](const Attempt& a, const Attempt& b) { return a.share < b.share; });
+    count = std::min(count, size_t(options_.expansion_batch));
+  }
+  batch.assign(retries_.begin(), retries_.begin() + long(count));
+  retries_.erase(retries_.begin(), retries_.begin() + long(count));
 }
 
 std::optional<SearchResult> StanceSearch::Run::take_results(
@@ -156,7 +177,8 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
       if (a.attempt == 0) remember_failure(a);
       if (a.attempt < options_.max_retries) {
         const bool towards_goal = a.candidate.add && goal_.find(a.candidate.contact) >= 0;
-        (towards_goal ? urgent_ : retries_).push_back({a.node, a.candidate, a.attempt + 1});
+        (towards_goal ? urgent_ : retries_)
+            .push_back({a.node, a.candidate, a.attempt + 1, a.share});
       }
     }
     e.milestone = t_;

@@ -29,6 +29,8 @@ struct StanceSearch::Attempt {
   int node = -1;
   Candidate candidate;
   int attempt = 0;
+  // support_share_score (m) of an addition when candidates are ordered (support_share.h), else 0.
+  double share = 0.0;
 };
 
 class StanceSearch::Run {
@@ -44,6 +46,7 @@ class StanceSearch::Run {
   std::optional<SearchResult> over_budget();
   // The next batch of attempts, or the search's end when nothing is left to try.
   std::optional<SearchResult> next_batch(std::vector<Attempt>& batch);
+  void take_retries(std::vector<Attempt>& batch);
   // Takes solved batch results in batch order: new nodes, retries, events; the search's end when
   // the goal is reached or the search is cancelled.
   std::optional<SearchResult> take_results(const std::vector<Attempt>& batch,
@@ -68,13 +71,19 @@ class StanceSearch::Run {
   bool already_in_tree(const Stance& stance, const std::vector<Placement>& placements) const;
   int closest() const;
   void advance_milestones();
+  // A node's rank in the open list: its cost, plus, once it is expanded for the targeted
+  // milestone, the support share of its next pending candidate (both in metres).
+  double priority(int n) const;
   int pop_best_open();
 
   // --- candidates and requests (search_requests.cpp)
   SearchOptions options_for_milestone(int m) const;
-  // Publishes the expansion of node n and returns its candidates as first attempts; nullopt when
-  // the search was cancelled at the event.
+  // Publishes the expansion of node n and returns its first candidates as first attempts (the
+  // rest wait in pending_, lazy expansion); nullopt when the search was cancelled at the event.
   std::optional<std::vector<Attempt>> expand(int n);
+  // The next options_.expansion_batch pending attempts of node n (all with 0); n goes back to the
+  // open list while some are left.
+  std::vector<Attempt> take_pending(int n);
   PostureRequest request_for(const Attempt& attempt, size_t index) const;
 
   StanceSearch& search_;
@@ -98,9 +107,12 @@ class StanceSearch::Run {
   std::deque<Attempt> urgent_, retries_;
   FailureMemo failures_;  // candidates that failed every attempt (defer_repeated_failures)
   NormalAngleTable angles_{problem_.scene};  // the normal-angle rule's bounds (candidates.h)
+  ReachTable reach_{problem_.scene};         // the reach rule's bounds (candidates.h)
   // The milestone each node was last expanded for (-1: not yet), for the last form of
   // backtracking.
   std::vector<int> expanded_for_;
+  // Lazy expansion: per node, the first attempts of its last expansion not yet solved, in order.
+  std::vector<std::deque<Attempt>> pending_;
 };
 
 }  // namespace stanceplan

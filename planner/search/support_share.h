@@ -1,0 +1,35 @@
+#pragma once
+// The support-share ordering (SearchOptions::order_candidates; a heuristic: it orders, never
+// prunes). With lazy expansion (SearchOptions::expansion_batch) the candidates of a node are solved
+// a few at a time, best first, and the search moves on as soon as a child is better than the node:
+// the order decides how many calls a step costs. A new contact is likely to carry its share of the
+// load when the guide's posture (the node's posture carried to the targeted milestone,
+// GuidePath::posture_near) already puts its surface on its partner, facing it: a sole above the
+// tread the waist is guided over, not a knee on the floor while the guide stands, nor a palm on a
+// tread 0.8 m below it.
+#include <vector>
+
+#include "planner/model/model_data.h"
+#include "planner/scene/scene.h"
+#include "planner/search/candidates.h"
+
+namespace stanceplan {
+
+// Weight of the normals' misalignment, in metres per unit of (1 + n1 . n2): 0 when they oppose
+// (the contact's E8), 0.2 m when they are at right angles (a knee's normal and the floor's while
+// standing), 0.4 m when they point the same way.
+constexpr double kShareNormalWeight = 0.2;
+
+// How far, in metres, the guide's posture is from realising contact c: the gap between its two
+// surfaces there (surface_gap) plus the normals' misalignment. `guide` holds forward kinematics at
+// the guide's posture. Lower is more promising.
+double support_share_score(const Scene& scene, const std::vector<ModelData>& guide,
+                           const Contact& c);
+
+// Removals first, in their given order (a step lifts a contact before it places one), then the
+// additions by increasing support_share_score; ties keep the given order (deterministic). Returns
+// the score of each candidate in the new order (0 for a removal).
+std::vector<double> order_by_support_share(const Scene& scene, const std::vector<ModelData>& guide,
+                                           std::vector<Candidate>& candidates);
+
+}  // namespace stanceplan

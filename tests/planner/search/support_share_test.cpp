@@ -1,0 +1,70 @@
+// The support-share ordering (support_share.h): at the guide's posture a sole above a tread ranks
+// before the other treads and before a knee, removals come first, ties keep their order.
+#include <gtest/gtest.h>
+
+#include "planner/model/kinematics.h"
+#include "planner/search/support_share.h"
+#include "tests/support/scenes.h"
+
+namespace stanceplan {
+namespace {
+
+Candidate add(const Scene& scene, const std::string& s1, const std::string& s2) {
+  return {true, test::task(scene, s1, s2).contact};
+}
+
+std::string name(const Scene& scene, const Candidate& c) {
+  return std::string(c.add ? "+" : "-") + scene.surfaces.id(scene.system, c.contact.s1) + "@" +
+         scene.surfaces.id(scene.system, c.contact.s2);
+}
+
+TEST(SupportShare, ScoresTheGapAndTheNormalsAtTheGuidePosture) {
+  const Scene scene = test::humanoid_scene("flat_ground");
+  const auto standing = system_kinematics(scene.system, test::standing_configuration(scene));
+  // A sole on the floor it stands on: realised (gap 0, normals opposed).
+  EXPECT_NEAR(support_share_score(scene, standing, add(scene, "robot/l_sole", "env/floor").contact),
+              0.0, 1e-6);
+  // A knee while standing: its normal (+x of the shank) at right angles to the floor's, the knee
+  // about half a metre above it: 0.2 m for the normals plus the gap.
+  const double knee =
+      support_share_score(scene, standing, add(scene, "robot/l_knee", "env/floor").contact);
+  const Surface& s = scene.surfaces.get(test::surface(scene, "robot/l_knee"));
+  double lowest = INFINITY;
+  for (const Eigen::Vector3d& v : s.vertices_L())
+    lowest = std::min(lowest, (standing[0].T_WL[s.link] * v).z());
+  EXPECT_NEAR(knee, lowest + kShareNormalWeight, 1e-6);
+  EXPECT_GT(knee, 0.4);
+}
+
+TEST(SupportShare, OrdersTheSoleAboveTheGuidedTreadFirst) {
+  const Scene scene = test::humanoid_scene("stairs");
+  // The guide's posture: standing with the waist above tread 5 (x 1.55-2.15 m, z = 0.5 m).
+  Eigen::VectorXd q = test::standing_configuration(scene);
+  q[0] = 1.7;
+  q[2] = 0.93 + 0.5;
+  const auto guide = system_kinematics(scene.system, q);
+  std::vector<Candidate> list = {add(scene, "robot/r_sole", "env/floor"),
+                                 add(scene, "robot/r_knee", "env/tread_5"),
+                                 add(scene, "robot/r_sole", "env/tread_3"),
+                                 {false, test::task(scene, "robot/l_sole", "env/tread_5").contact},
+                                 add(scene, "robot/r_sole", "env/tread_5"),
+                                 add(scene, "robot/r_sole", "env/tread_4")};
+  const std::vector<double> scores = order_by_support_share(scene, guide, list);
+  ASSERT_EQ(list.size(), 6u);
+  EXPECT_EQ(name(scene, list[0]), "-robot/l_sole@env/tread_5");  // removals first
+  EXPECT_EQ(scores[0], 0.0);
+  EXPECT_EQ(name(scene, list[1]), "+robot/r_sole@env/tread_5");
+  EXPECT_NEAR(scores[1], 0.0, 1e-6);
+  EXPECT_EQ(name(scene, list[2]), "+robot/r_sole@env/tread_4");
+  EXPECT_EQ(name(scene, list[3]), "+robot/r_sole@env/tread_3");
+  EXPECT_TRUE(std::is_sorted(scores.begin() + 1, scores.end()));
+  // Ties keep the given order: two removals stay as given.
+  std::vector<Candidate> removals = {
+      {false, test::task(scene, "robot/r_sole", "env/floor").contact},
+      {false, test::task(scene, "robot/l_sole", "env/floor").contact}};
+  order_by_support_share(scene, guide, removals);
+  EXPECT_EQ(name(scene, removals[0]), "-robot/r_sole@env/floor");
+}
+
+}  // namespace
+}  // namespace stanceplan
