@@ -63,10 +63,16 @@ bool write_partial_plan(const SearchResult& result, const Scenario& scenario,
 // --- the computed guide (pipeline_guide.cpp)
 // When the scenario has no `guide:` section: computes one (planner/guide/guide_planner.h) with the
 // scenario's guide settings and, when computed, reads it into the scenario exactly as the section
-// written by computed_guide_text would be read. nullopt when the scenario has its own guide.
+// written by computed_guide_text would be read. A scenario with a partial guide (one that states
+// no pose for a root that must move, planner/guide/partial_guide.h) gets those roots' poses from
+// the computed path (ComputedGuide::completed names them). nullopt when the scenario's own guide
+// is whole.
 std::optional<ComputedGuide> complete_guide(Scenario& scenario);
 // The guide in the scenario's `guide:` syntax, with a comment line saying how it was computed.
 std::string computed_guide_text(const Scenario& scenario, const ComputedGuide& guide);
+// What milestone k of a computed guide offers, for its figure: "walks on robot/l_sole on env/floor,
+// ..." (an approach's milestone), else "offers robot/*_sole on env/floor, ...; last: ...".
+std::string milestone_offer(const Scenario& scenario, const ComputedGuide& guide, size_t k);
 // "stats: guide ..." (guide time apart from the search's).
 void print_guide_stats(const ComputedGuide& guide, std::ostream& out);
 // The initial configuration and every milestone's configuration as a figure strip (PNG).

@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "app/pipeline.h"
+#include "planner/guide/partial_guide.h"
 #include "planner/io/guide_writer.h"
 #include "render/image/png_io.h"
 
@@ -16,15 +17,39 @@ std::string computed_guide_text(const Scenario& scenario, const ComputedGuide& g
                 "computed by stanceplan guide (seed %u): %zu milestones every %.2f m of base "
                 "travel at most",
                 unsigned(scenario.guide.seed), guide.milestones.size(), scenario.guide.spacing);
-  return guide_section(scenario.scene.system, guide.milestones, {header});
+  std::vector<std::string> comment{header};
+  if (!guide.phases.last.empty()) {
+    std::string pairs;
+    for (const auto& [s1, s2] : guide.phases.last)
+      pairs += (pairs.empty() ? "[" : ", [") + s1 + ", " + s2 + "]";
+    comment.push_back("offered last (search.last_contacts, unless the file states some): [" +
+                      pairs +
+                      "]: they carry less than half the weight of the goal's heaviest "
+                      "new contact");
+  }
+  return guide_section(scenario.scene.system, guide.milestones, comment);
 }
 
 std::optional<ComputedGuide> complete_guide(Scenario& scenario) {
-  if (scenario.has_guide) return std::nullopt;
+  // A written guide is used as it is, unless it is partial (partial_guide.h): then the roots it
+  // leaves out are given the computed path's poses.
+  std::vector<int> unstated;
+  if (scenario.has_guide) {
+    unstated = unstated_moving_roots(scenario);
+    if (unstated.empty()) return std::nullopt;
+  }
   ComputedGuide guide = compute_guide(scenario, scenario.guide);
-  if (guide.status == GuideStatus::Computed)
+  if (scenario.has_guide) {
+    if (guide.status == GuideStatus::Computed) complete_milestones(scenario, guide, unstated);
+    guide.completed = unstated;
+    return guide;
+  }
+  if (guide.status == GuideStatus::Computed) {
     read_guide_section(scenario, computed_guide_text(scenario, guide),
                        scenario.file + " (computed guide)");
+    // The goal contacts that only steady the body come last (contact_phases.h).
+    if (scenario.search.last_contacts.empty()) scenario.search.last_contacts = guide.phases.last;
+  }
   return guide;
 }
 
@@ -36,6 +61,26 @@ void print_guide_stats(const ComputedGuide& guide, std::ostream& out) {
                 guide.time_s, guide.posture_time_s, guide.path_time_s, guide.raw_waypoints,
                 guide.path.size(), guide.checked_pairs, guide.milestones.size());
   out << line;
+  if (!guide.approach_note.empty()) out << "stats: guide: " << guide.approach_note << "\n";
+  if (guide.approach_milestones > 0)
+    out << "stats: guide: " << guide.approach_milestones
+        << " milestones approach the goal's footholds in the initial posture\n";
+}
+
+std::string milestone_offer(const Scenario& scenario, const ComputedGuide& guide, size_t k) {
+  const auto pairs = [](const std::vector<std::pair<std::string, std::string>>& list) {
+    std::string out;
+    for (const auto& [s1, s2] : list) out += (out.empty() ? "" : ", ") + s1 + " on " + s2;
+    return out;
+  };
+  if (!guide.milestones[k].contacts.empty())
+    return "walks on " + pairs(guide.milestones[k].contacts);
+  std::string out = scenario.search.contact_pairs.empty()
+                        ? "offers every contact"
+                        : "offers " + pairs(scenario.search.contact_pairs);
+  if (!scenario.search.last_contacts.empty())
+    out += "; last: " + pairs(scenario.search.last_contacts);
+  return out;
 }
 
 void write_guide_strip(const Scenario& scenario, const ComputedGuide& guide,
@@ -48,7 +93,8 @@ void write_guide_strip(const Scenario& scenario, const ComputedGuide& guide,
   for (size_t k = 0; k < guide.milestone_configurations.size(); ++k) {
     PlanStep step;
     const bool last = k + 1 == guide.milestone_configurations.size();
-    step.action = "milestone " + std::to_string(k + 1) + (last ? " (goal posture)" : "");
+    step.action = "milestone " + std::to_string(k + 1) + (last ? " (goal posture)" : "") + "\n" +
+                  milestone_offer(scenario, guide, k);
     if (last) step.stance = scenario.stance(scenario.goal_stance);
     step.q = guide.milestone_configurations[k];
     plan.steps.push_back(step);

@@ -62,6 +62,7 @@ void plan_time(benchmark::State& state, const std::string& file, bool computed) 
         return;
       }
       read_guide_section(s, guide_section(s.scene.system, guide.milestones), s.file);
+      if (s.search.last_contacts.empty()) s.search.last_contacts = guide.phases.last;
     }
     SearchOptions options = s.search;
     options.threads = 1;

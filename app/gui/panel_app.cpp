@@ -13,6 +13,7 @@
 #include "app/collision_matrix_note.h"
 #include "app/exit_codes.h"
 #include "app/gui/controls_section.h"
+#include "app/gui/guide_overlay.h"
 #include "app/gui/node_section.h"
 #include "app/gui/panel_app_impl.h"
 #include "app/gui/panel_script.h"
@@ -283,6 +284,12 @@ ViewRequest PanelApp::view_request(long shown, const Rect& area) const {
     r.caption = state_.source == ViewSource::PlanStep && plan_
                     ? render::step_caption(app::plan_view(scenario_, *plan_), state_.plan_step)
                     : event_caption(scenario_.scene, e, milestones);
+    // The milestone the search aims at, as a ghost (not over the plan's steps).
+    if (state_.source != ViewSource::PlanStep)
+      if (const auto aimed = aimed_milestone(scenario_.milestones, e.milestone)) {
+        r.ghost_q = aimed->q;
+        r.caption += "\n" + aimed_caption(*aimed);
+      }
   } else {
     r.q = scenario_.initial_configuration;
     r.caption =

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "app/gui/guide_overlay.h"
 #include "app/gui/node_details.h"
 #include "app/gui/panel_app_impl.h"
 #include "app/gui/script_pointer.h"
@@ -55,6 +56,8 @@ std::string PanelApp::shown_summary() const {
     if (c.vertices > 0) line << ", " << std::lround(c.force_W.norm()) << " N";
     line << ")";
   }
+  if (const auto aimed = aimed_milestone(scenario_.milestones, e.milestone))
+    line << "; " << aimed_caption(*aimed);
   return line.str();
 }
 

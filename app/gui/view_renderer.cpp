@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "app/gui/guide_overlay.h"
 #include "planner/util/fork_gate.h"
 
 namespace stanceplan::gui {
@@ -120,8 +121,12 @@ void ViewRenderer::render_one(ViewRequest request, std::uint64_t id) {
     renderer_ = std::make_unique<render::Renderer>(request.width, request.height, style_, meshes_);
   renderer_->set_style(style_);  // a job may have changed it
   ViewFrame frame;
-  frame.image = renderer_->render(scene_, request.q, request.contacts, request.forces,
-                                  request.camera, request.caption);
+  frame.image =
+      request.ghost_q
+          ? render_with_ghost(*renderer_, scene_, request.q, request.contacts, request.forces,
+                              *request.ghost_q, request.camera, request.caption)
+          : renderer_->render(scene_, request.q, request.contacts, request.forces, request.camera,
+                              request.caption);
   frame.request = id;
   frame.render_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   for (const std::string& w : renderer_->take_warnings()) {

@@ -31,6 +31,8 @@ struct ViewRequest {
   std::vector<VertexForce> forces;
   render::Camera camera;
   std::string caption;
+  // The configuration of the milestone aimed at, drawn as a translucent ghost (guide_overlay.h).
+  std::optional<Eigen::VectorXd> ghost_q;
   int width = 0;
   int height = 0;
 };

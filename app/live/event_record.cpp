@@ -32,12 +32,17 @@ std::string outcome(const SearchEvent& e, int milestones) {
   switch (e.kind) {
     case SearchEventKind::Expansion:
       return "expanding node " + std::to_string(e.node) + " · target milestone " +
-             std::to_string(e.milestone) + " of " + std::to_string(milestones) + " · " +
+             std::to_string(e.milestone + 1) + " of " + std::to_string(milestones) + " · " +
              std::to_string(e.nodes) + " nodes";
     case SearchEventKind::Candidate: {
       std::string text = std::string(to_string(e.status)) + ", ";
       text += e.accepted ? "accepted as node " + std::to_string(e.node) : "rejected: " + e.message;
-      return text + " · " + fixed(e.time_ms, 1) + " ms";
+      text += " · " + fixed(e.time_ms, 1) + " ms";
+      // Which milestone the candidate was aimed at (its step target, E25).
+      if (milestones > 0)
+        text += " · target milestone " + std::to_string(e.milestone + 1) + " of " +
+                std::to_string(milestones);
+      return text;
     }
     case SearchEventKind::Milestone:
       return "node " + std::to_string(e.node) + " reached milestone " +

@@ -2,12 +2,14 @@
 // Milestones sampled along the guide path (docs/METHOD.md section 3), in the form the search reads
 // from a scenario's `guide:` section: partial milestones stating the pose of each moving root
 // (its position; an object's orientation too when it turns between the two postures), nothing
-// else. No joint angles (the solver's reference keeps the initial posture, as in the untuned
-// scenarios) and no per-milestone contacts: the search offers search.contact_pairs at every
-// milestone, and its candidate pruning (contact_reach) already keeps the surfaces out of reach
-// out of it.
+// else, but for the goal milestone, which states the robots' joints of the goal posture, and the
+// approach's milestones (approach.h), which offer the contacts kept from the initial stance only.
+// Elsewhere the search offers search.contact_pairs, and its candidate pruning (contact_reach)
+// already keeps the surfaces out of reach out of it.
 #include <Eigen/Core>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "planner/guide/guide_space.h"
@@ -19,8 +21,16 @@ struct GuideMilestone {
     int entity = -1;
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
     std::optional<Eigen::Vector3d> rpy;  // roll, pitch, yaw (rad), as the scenario's base_rpy
+    // A robot's joint angles (rad, in the order of its dofs), stated by the goal milestone only:
+    // the solver's reference there is the goal posture (a seated robot is not pulled towards its
+    // standing legs).
+    std::optional<Eigen::VectorXd> joints;
   };
   std::vector<Root> roots;
+  // The contact pairs offered while the milestone is the target ("entity/surface" patterns, as a
+  // scenario's milestone `contacts:`); empty: search.contact_pairs. Only the approach's milestones
+  // state some (approach.h): the contacts kept from the initial stance.
+  std::vector<std::pair<std::string, std::string>> contacts;
 };
 
 // Points of the space every `spacing` of travel along the waypoints (GuideSpace::travel; spaced

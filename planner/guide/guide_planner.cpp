@@ -1,8 +1,11 @@
 #include "planner/guide/guide_planner.h"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <sstream>
 
+#include "planner/guide/approach.h"
 #include "planner/guide/goal_posture.h"
 #include "planner/guide/guide_space.h"
 #include "planner/guide/guide_validity.h"
@@ -51,6 +54,96 @@ std::string no_path(const PlannedPath& path, GuideValidity& validity, const Guid
   return out.str();
 }
 
+ComputedGuide& failed(std::chrono::steady_clock::time_point started, ComputedGuide& guide) {
+  guide.status = GuideStatus::NoPath;
+  guide.time_s = seconds_since(started);
+  return guide;
+}
+
+// The approach (approach.h) nearest the goal's footholds that is valid where the whole path's
+// ends are: backed off by 0, 2, 4 ... cm, in the initial posture, else with the goal posture's
+// arms. None when no such one is valid (the note says why, at the footholds).
+std::optional<Approach> valid_approach(const Problem& problem, const Eigen::VectorXd& q_goal,
+                                       const GuideOptions& options, ComputedGuide& guide) {
+  if (!approach_configuration(problem, q_goal)) return std::nullopt;
+  GuideValidity whole(problem, problem.initial_configuration, q_goal, options);
+  for (int k = 0; k * kBackOffStep <= kMaxBackOff + 1e-9; ++k)
+    for (const bool limbs_only : {false, true}) {
+      std::optional<Approach> a =
+          approach_configuration(problem, q_goal, limbs_only, k * kBackOffStep);
+      if (whole.valid(a->q)) return a;
+    }
+  guide.approach_note = "no valid approach configuration (at the goal's footholds: " +
+                        whole.why_invalid(approach_configuration(problem, q_goal)->q) +
+                        "): one leg";
+  return std::nullopt;
+}
+
+// One leg of the path, q_a to q_b: its waypoints and milestones appended to the guide (false, with
+// the message, when no path is found).
+bool plan_leg(const Problem& problem, const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b,
+              const GuideOptions& options, ComputedGuide& guide) {
+  const GuideSpace space(problem.scene.system, q_a, q_b);
+  GuideValidity validity(problem, space.q_start(), space.q_goal(), options);
+  guide.checked_pairs = std::max(guide.checked_pairs, validity.num_checked_pairs());
+  Eigen::VectorXd q(problem.scene.system.nq());
+  const PlannedPath path = plan_guide_path(
+      space,
+      [&](const Eigen::VectorXd& x) {
+        space.configuration(x, q);
+        return validity.valid(q);
+      },
+      options);
+  guide.path_time_s += path.time_s;
+  guide.raw_waypoints += path.raw_waypoints;
+  if (path.status != PathStatus::Found) {
+    guide.message = no_path(path, validity, space, options);
+    return false;
+  }
+  for (size_t k = guide.path.empty() ? 0 : 1; k < path.waypoints.size(); ++k) {
+    space.configuration(path.waypoints[k], q);
+    guide.path.push_back(q);
+  }
+  for (const Eigen::VectorXd& x : points_along(space, path.waypoints, options.spacing)) {
+    guide.milestones.push_back(milestone_at(space, x));
+    space.configuration(x, q);
+    guide.milestone_configurations.push_back(q);
+  }
+  return true;
+}
+
+// The approach's milestones offer the kept contacts only, and an approaching robot's base keeps
+// the height it has over them (its kept contacts stay on the surfaces they start on): evenly
+// from the initial height to the approach's, not the path's samples' (which wander 0.1 m up and
+// down, the tolerance of a milestone).
+void walk_level(const Problem& problem, const Approach& approach, ComputedGuide& guide) {
+  const System& system = problem.scene.system;
+  std::vector<GuideMilestone>& milestones = guide.milestones;
+  for (size_t k = 0; k < milestones.size(); ++k) {
+    milestones[k].contacts = approach.kept;
+    const double t = double(k + 1) / double(milestones.size());
+    for (GuideMilestone::Root& root : milestones[k].roots)
+      if (std::find(approach.robots.begin(), approach.robots.end(), root.entity) !=
+          approach.robots.end()) {
+        const int z = system.offset(root.entity) + Entity::kBasePosition + 2;
+        root.position.z() = (1.0 - t) * problem.initial_configuration[z] + t * approach.q[z];
+        guide.milestone_configurations[k][z] = root.position.z();
+      }
+  }
+}
+
+// The goal milestone states the robots' joints of the goal posture: the solver's reference there
+// is then the posture the goal stance was solved in, not the initial one carried along (a robot
+// sitting down is otherwise pulled towards its standing legs).
+void state_goal_joints(const System& system, const Eigen::VectorXd& q_goal, GuideMilestone& goal) {
+  for (GuideMilestone::Root& root : goal.roots) {
+    const Entity& entity = system.entity(root.entity);
+    if (entity.kind != EntityKind::FloatingRobot || entity.model->num_dofs() == 0) continue;
+    root.joints =
+        q_goal.segment(system.offset(root.entity) + entity.first_dof(), entity.model->num_dofs());
+  }
+}
+
 }  // namespace
 
 const char* to_string(GuideStatus status) {
@@ -77,34 +170,19 @@ ComputedGuide compute_guide(const Problem& problem, const GuideOptions& options)
     return guide;
   }
   guide.q_goal = posture.q;
-  const GuideSpace space(problem.scene.system, problem.initial_configuration, posture.q);
-  GuideValidity validity(problem, space.q_start(), space.q_goal(), options);
-  guide.checked_pairs = validity.num_checked_pairs();
-  Eigen::VectorXd q(problem.scene.system.nq());
-  const PlannedPath path = plan_guide_path(
-      space,
-      [&](const Eigen::VectorXd& x) {
-        space.configuration(x, q);
-        return validity.valid(q);
-      },
-      options);
-  guide.path_time_s = path.time_s;
-  guide.raw_waypoints = path.raw_waypoints;
-  if (path.status != PathStatus::Found) {
-    guide.status = GuideStatus::NoPath;
-    guide.message = no_path(path, validity, space, options);
-    guide.time_s = seconds_since(started);
-    return guide;
+  guide.phases = order_goal_contacts(problem, posture);
+  // On the way to a changed posture the robot first walks in its own (approach.h), when the
+  // approach configuration is valid where the whole path's ends are.
+  std::optional<Approach> approach = valid_approach(problem, posture.q, options, guide);
+  const Eigen::VectorXd& q_end_of_first = approach ? approach->q : posture.q;
+  if (!plan_leg(problem, problem.initial_configuration, q_end_of_first, options, guide))
+    return failed(started, guide);
+  if (approach) {
+    walk_level(problem, *approach, guide);
+    guide.approach_milestones = int(guide.milestones.size());
+    if (!plan_leg(problem, approach->q, posture.q, options, guide)) return failed(started, guide);
   }
-  for (const Eigen::VectorXd& x : path.waypoints) {
-    space.configuration(x, q);
-    guide.path.push_back(q);
-  }
-  for (const Eigen::VectorXd& x : points_along(space, path.waypoints, options.spacing)) {
-    guide.milestones.push_back(milestone_at(space, x));
-    space.configuration(x, q);
-    guide.milestone_configurations.push_back(q);
-  }
+  state_goal_joints(problem.scene.system, posture.q, guide.milestones.back());
   guide.status = GuideStatus::Computed;
   guide.time_s = seconds_since(started);
   return guide;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "planner/guide/contact_phases.h"
 #include "planner/guide/guide_milestones.h"
 #include "planner/guide/guide_options.h"
 #include "planner/plan/problem.h"
@@ -28,7 +29,14 @@ struct ComputedGuide {
   std::vector<Eigen::VectorXd> path;                      // configurations at the path's waypoints
   std::vector<Eigen::VectorXd> milestone_configurations;  // configurations at the milestones
   std::vector<GuideMilestone> milestones;                 // what a scenario's guide: section states
-  int raw_waypoints = 0;                                  // the planner's path before the shortcuts
+  // The order of the goal's new contacts (contact_phases.h): `phases.last` are offered last.
+  ContactPhases phases;
+  // The first milestones that walk to the approach configuration (approach.h), 0 without one.
+  int approach_milestones = 0;
+  std::string approach_note;  // why a posture change has no approach, "" otherwise
+  // When it completes a partial guide (partial_guide.h): the roots it gave poses to.
+  std::vector<int> completed;
+  int raw_waypoints = 0;  // the planner's path before the shortcuts
   int checked_pairs = 0;  // collision pairs the validity rule checks
   double posture_time_s = 0.0, path_time_s = 0.0, time_s = 0.0;
 };

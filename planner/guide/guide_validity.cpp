@@ -107,6 +107,13 @@ GuideValidity::GuideValidity(const Problem& problem, const Eigen::VectorXd& q_st
         for (int j = 0; f != e && j < int(scene.surfaces.of(f).size()); ++j)
           if (offered(scene, {e, i}, {f, j}, options_.contact_pairs))
             supports_.push_back({e, {e, i}, {f, j}});
+    // The stances' own contacts are supports too, offered or not (a robot whose feet are fixed
+    // where they are: the contact pairs need not name them).
+    for (const auto* stance : {&problem.initial_stance, &problem.goal_stance})
+      for (const StanceContact& c : *stance)
+        for (const auto& [own, other] :
+             {std::pair{c.contact.s1, c.contact.s2}, std::pair{c.contact.s2, c.contact.s1}})
+          if (own.entity == e && other.entity != e) supports_.push_back({e, own, other});
   }
 }
 

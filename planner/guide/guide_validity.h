@@ -18,8 +18,9 @@
 //      postures that the search's postures replace (each solve keeps the robot off itself); a
 //      hand's fingertips, interpolated, pass each other where no real motion would.
 //  - a support within reach: a floating robot under gravity has a contact-capable surface (one
-//    that the contact pairs offer) whose origin lies within GuideOptions::reach of a surface of
-//    another entity it may touch (objects, carried, need none).
+//    that the contact pairs offer, or one of a contact of the initial or goal stance) whose origin
+//    lies within GuideOptions::reach of a surface of another entity it may touch (objects,
+//    carried, need none).
 // Const model (pairs, supports) plus one workspace: valid() allocates nothing.
 #include <Eigen/Core>
 #include <string>

@@ -243,7 +243,7 @@ Image render_strip(const PlanView& plan, StripOptions strip, const SequenceOptio
     regular->draw(image, after, baseline,
                   fit_text(*regular, step_action(plan.scene, step), px, room), px, ink);
     regular->draw(image, static_cast<float>(x), baseline + 1.35f * px,
-                  fit_text(*regular, stance_summary(plan.scene, step.stance), 0.8f * px,
+                  fit_text(*regular, step_detail(plan.scene, step), 0.8f * px,
                            static_cast<float>(strip.panel_width)),
                   0.8f * px, soft);
   }

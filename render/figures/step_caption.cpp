@@ -43,13 +43,19 @@ std::string stance_summary(const Scene& scene, const Stance& stance) {
 std::string step_action(const Scene& scene, const PlanStep& step) {
   // A figure of something that is not a plan step (a computed guide's milestone) labels itself.
   if (!step.changed && step.action != "initial" && step.action != "add" && step.action != "remove")
-    return step.action;
+    return step.action.substr(0, step.action.find('\n'));
   if (step.action == "initial" || !step.changed) return "initial stance";
   const std::string s1 = surface_name(scene, step.changed->s1),
                     s2 = surface_name(scene, step.changed->s2);
   if (step.action == "add") return "add " + s1 + " on " + s2;
   if (step.action == "remove") return "remove " + s1 + " from " + s2;
   return step.action + " " + s1 + " / " + s2;
+}
+
+std::string step_detail(const Scene& scene, const PlanStep& step) {
+  const size_t newline = step.action.find('\n');
+  if (!step.changed && newline != std::string::npos) return step.action.substr(newline + 1);
+  return stance_summary(scene, step.stance);
 }
 
 std::string step_caption(const PlanView& plan, int step) {
@@ -71,7 +77,12 @@ std::string step_caption(const PlanView& plan, int step) {
   // The last iterate of a failed solve (`posture --out` without a posture) says so first.
   if (s.status != PostureStatus::Solved)
     caption.insert(0, std::string("FAILED (") + to_string(s.status) + ", not a posture)  \u00b7  ");
-  caption.append("\nstance: ").append(stance_summary(plan.scene, s.stance));
+  // A figure that is not a plan step (a computed guide's milestone) says in its own label what it
+  // offers, not "no contact".
+  if (!s.changed && s.action.find('\n') != std::string::npos)
+    caption.append("\n").append(step_detail(plan.scene, s));
+  else
+    caption.append("\nstance: ").append(stance_summary(plan.scene, s.stance));
   return caption;
 }
 

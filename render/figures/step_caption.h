@@ -12,6 +12,9 @@ namespace stanceplan::render {
 std::string stance_summary(const Scene& scene, const Stance& stance);
 // "initial stance", "add r_hand on table", "remove l_sole from floor".
 std::string step_action(const Scene& scene, const PlanStep& step);
+// The line under a step's action: its stance; for a labelled figure that is not a plan step (a
+// computed guide's milestone, whose action is "LABEL\nDETAIL"), its detail.
+std::string step_detail(const Scene& scene, const PlanStep& step);
 // Two lines: "Step 3 of 6 · add r_hand on table" (steps numbered as in the plan, 0 = initial)
 // and "stance: ...". A one-step plan says "Initial stance".
 std::string step_caption(const PlanView& plan, int step);

@@ -64,5 +64,13 @@ TEST(GuideFree, TheTableCarriedByTwoHumanoidsPlansAndCertifies) {
   test::expect_certified(s, result, "guide_free_table");
 }
 
+// The climb: the supporter's fixed feet are its supports (the stances' contacts count for the
+// reach rule), the climber's path crosses the gap over the palms the contact pairs offer.
+TEST(GuideFree, TheClimbOverTheSupportersHandsPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("climb", &s);
+  test::expect_certified(s, result, "guide_free_climb");
+}
+
 }  // namespace
 }  // namespace stanceplan
