@@ -4,8 +4,8 @@
 // Targets (issue 17): guide <= 1 s per scenario; a guide-free plan within 2x of the hand-guided
 // plan's time. One solver process, so that the calls are deterministic. Run (minutes: the plans
 // that find nothing run into their budgets):
-//   nice -n 10 build/bench/guide_bench --benchmark_repetitions=5 \
-//       --benchmark_report_aggregates_only=true --benchmark_filter=guide/
+//   nice -n 10 build/bench/guide_bench --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true --benchmark_filter=guide/   (one command line)
 //   nice -n 10 build/bench/guide_bench --benchmark_filter=plan/
 #include <benchmark/benchmark.h>
 

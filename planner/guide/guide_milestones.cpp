@@ -29,7 +29,7 @@ GuideMilestone milestone_at(const GuideSpace& space, const Eigen::VectorXd& x) {
   GuideMilestone m;
   for (size_t k = 0; k < space.moving().size(); ++k) {
     const int e = space.moving()[k];
-    GuideMilestone::Root root{e, x.segment<3>(7 * int(k)), std::nullopt};
+    GuideMilestone::Root root{e, x.segment<3>(7 * int(k)), std::nullopt, std::nullopt};
     // An object's orientation is part of its task (a ball turned in the hand); a robot's heading
     // follows its feet: stated, it pulls the solver's reference into turns that its stance cannot
     // make (the walk with a turn: no plan in 817 solver calls with headings, 44 without).

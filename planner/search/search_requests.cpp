@@ -102,10 +102,11 @@ PostureRequest StanceSearch::Run::request_for(const Attempt& a, size_t index) co
   const SearchNode& node = tree_[size_t(a.node)];
   PostureRequest r;
   for (size_t k = 0; k < node.stance().contacts().size(); ++k)
-    r.contacts.push_back({node.stance().contacts()[k], true, node.placements[k], std::nullopt, {}});
+    r.contacts.push_back(
+        {node.stance().contacts()[k], true, node.placements[k], std::nullopt, {}, {}});
   const Eigen::VectorXd& q_ref = guide_.size() > 0 ? guide_.milestone(t_) : node.q();
   if (a.candidate.add) {
-    ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt, {}};
+    ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt, {}, {}};
     // obj4 pulls the new contact towards its placement in the targeted milestone; a retry aims at
     // a point nearer the current one (a shorter step); never across another contact.
     const Placement now = measure_placement(scene, a.candidate.contact, node.q());

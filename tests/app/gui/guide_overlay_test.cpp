@@ -8,7 +8,10 @@
 #include <fstream>
 
 #include "app/gui/guide_overlay.h"
+#include "planner/io/scenario.h"
 #include "render/image/png_io.h"
+#include "render/renderer.h"
+#include "tests/render/render_fixtures.h"
 #include "tests/support/paths.h"
 #include "tests/support/xvfb_run.h"
 
@@ -28,6 +31,40 @@ TEST(GuideOverlay, AimsAtTheTargetedMilestoneNumberedFromOne) {
   EXPECT_EQ(gui::aimed_caption(*first), "aiming at milestone 1 of 2 (translucent)");
   // Past the last (the goal reached): still the last.
   EXPECT_EQ(gui::aimed_milestone(milestones, 5)->index, 1);
+}
+
+// The ghost itself, off-screen: the walk's robot drawn at q, its ghost 0.6 m to its side. Every
+// pixel the ghost changes turns towards its light blue (blue up against red), the ghost covers
+// a robot's worth of pixels, and a ghost at q itself changes no pixel outside the robot.
+TEST(GuideOverlay, TheGhostTintsWhatItCoversBlueAndNothingElse) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  const Scene& scene = scenario.scene;
+  const Eigen::VectorXd& q = scenario.initial_configuration;
+  const int robot = scene.system.find_entity("robot");
+  ASSERT_GE(robot, 0);
+  Eigen::VectorXd ghost_q = q;
+  ghost_q[scene.system.offset(robot) + 1] += 0.6;  // the floating root's y
+  render::Renderer renderer(320, 240, test::plain_style());
+  const render::Camera camera = test::camera_on_x_axis();
+  const render::Image plain = renderer.render(scene, q, {}, {}, camera);
+  const render::Image ghosted =
+      gui::render_with_ghost(renderer, scene, q, {}, {}, ghost_q, camera, "");
+  const render::Image self = gui::render_with_ghost(renderer, scene, q, {}, {}, q, camera, "");
+  int changed = 0, bluer = 0, changed_off_robot = 0;
+  for (int y = 0; y < plain.height; ++y)
+    for (int x = 0; x < plain.width; ++x) {
+      const std::uint8_t* a = plain.pixel(x, y);
+      const std::uint8_t* b = ghosted.pixel(x, y);
+      const std::uint8_t* c = self.pixel(x, y);
+      const bool background = a[0] == 255 && a[1] == 255 && a[2] == 255;
+      if (background && (c[0] != a[0] || c[1] != a[1] || c[2] != a[2])) ++changed_off_robot;
+      if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) continue;
+      ++changed;
+      if (b[2] - b[0] > a[2] - a[0]) ++bluer;
+    }
+  EXPECT_GT(changed, 1500) << "the ghost covers a robot's worth of pixels";
+  EXPECT_GE(bluer, changed * 95 / 100) << "what the ghost covers turns light blue";
+  EXPECT_EQ(changed_off_robot, 0) << "a ghost at q stays on the robot";
 }
 
 // The guide-free walk: its guide is computed before the window opens; the first expansion aims at
