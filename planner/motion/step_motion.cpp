@@ -228,7 +228,11 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
       why = "the last sample is " + describe(m) + " from the end";
     } else {
       const MotionSample* previous = samples->size() > first ? &samples->back() : nullptr;
-      PostureResult r = project(segment, s_next, q_prev, previous, true);
+      // The retry only once halving failed twice: most failures are a step too long, and a retry
+      // (the plan's weights) follows the reference less closely (measured: retrying every failure
+      // lost a step of the walk).
+      PostureResult r =
+          project(segment, s_next, q_prev, previous, halvings >= kHalvingsBeforeBridge);
       const SpacingMeasure m =
           r.status == PostureStatus::Solved ? spacing_->measure(q_prev, r.q) : SpacingMeasure{};
       if (r.status == PostureStatus::Solved && m.ratio(joint, point) <= 1.0) {
