@@ -15,16 +15,26 @@ namespace stanceplan::app {
 namespace {
 
 // The plan file's own world as a scenario for the writer: its entities and surfaces, its friction
-// (the solver's other settings are the defaults: a plan file does not state them).
-Scenario scenario_of(const LoadedPlan& loaded) {
+// and cone generators. A plan file does not state the solver's other settings (collision margin,
+// weights, iterations): they come from the scenario the plan names when it still loads (the motion
+// projects with the settings the steps were solved with), else they are the defaults.
+Scenario scenario_of(const LoadedPlan& loaded, std::ostream& err) {
   Scenario s;
-  if (!loaded.scenario.empty())
+  if (!loaded.scenario.empty()) {
     s.file = (std::filesystem::absolute(loaded.file).parent_path() / loaded.scenario)
                  .lexically_normal()
                  .string();
+    try {
+      s.solver = load_scenario(s.file).solver;
+    } catch (const InputError& e) {
+      err << "stanceplan: warning: the plan's scenario does not load, default solver settings ("
+          << e.what() << ")\n";
+    }
+  }
   s.scene = loaded.scene;
   s.spec = loaded.spec;
   s.solver.friction = loaded.friction;
+  s.solver.cone_generators = loaded.cone_generators;
   return s;
 }
 
@@ -66,7 +76,7 @@ int run_motion(const MotionCommandOptions& options, std::ostream& out, std::ostr
   const LoadedPlan loaded = read_plan(options.plan);
   if (!loaded.plan.failed.empty())
     throw InputError(options.plan + ": failed: a failed solve has no motion");
-  const Scenario scenario = scenario_of(loaded);
+  const Scenario scenario = scenario_of(loaded, err);
   Plan plan = loaded.plan;
   const bool every_step =
       add_plan_motion(scenario.scene, scenario.solver, options.motion, plan, out, err);

@@ -39,6 +39,13 @@ class PlanReader {
                        : "";
     out.spec.gravity = vector3(member(root, "gravity", ""), "gravity");
     out.friction = number(member(root, "friction", ""), "friction");
+    if (root.contains("cone_generators")) {
+      const double k = number(root["cone_generators"], "cone_generators");
+      if (k != std::floor(k) || k < 3 || k > 64)
+        fail("cone_generators",
+             "expected a whole number from 3 to 64, found " + root["cone_generators"].dump());
+      out.cone_generators = int(k);
+    }
     read_entities(member(root, "entities", ""), out.spec);
     read_ignored(root, out);
     out.spec.collision = options_.build_collision;
@@ -169,6 +176,8 @@ class PlanReader {
         fail(f + ".kind",
              "expected floating, fixed, object or environment, found \"" + kind + "\"");
       out.urdf = path_of(string(e, "urdf", f));
+      // Informative (the surfaces come from "surfaces"), kept so that a plan rewritten names it.
+      if (e.contains("surfaces_file")) out.surfaces = path_of(string(e, "surfaces_file", f));
       if (e.contains("package_paths")) {
         if (!e["package_paths"].is_array())
           fail(f + ".package_paths", "expected an array of folders");

@@ -17,6 +17,7 @@ struct LoadedPlan {
   SceneSpec spec;        // entities with paths resolved against the plan's folder
   Scene scene;           // surfaces come from the plan's "surfaces" section
   double friction = 1.0;
+  int cone_generators = 4;  // K of the solver that made the plan (E5; informative for a checker)
   std::vector<std::pair<LinkName, LinkName>> ignored_pairs;
   Plan plan;
 };

@@ -23,6 +23,7 @@ std::string check_motion_options(const MotionOptions& o) {
     return "max_halvings: expected 0..30, found " + std::to_string(o.max_halvings);
   if (o.max_samples < 1)
     return "max_samples: expected >= 1, found " + std::to_string(o.max_samples);
+  if (o.max_solves < 1) return "max_solves: expected >= 1, found " + std::to_string(o.max_solves);
   return "";
 }
 

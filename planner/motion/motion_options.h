@@ -23,6 +23,9 @@ struct MotionOptions {
   int max_halvings = 6;
   // At most this many samples per step.
   int max_samples = 2000;
+  // At most this many projections per segment of a step (lift, travel, approach; failed ones,
+  // retries and bridges included): one that needs more fails with that reason.
+  int max_solves = 300;
 };
 
 // "" when the options are usable, else what is wrong ("clearance: expected >= 0, found -1").

@@ -1,9 +1,11 @@
 #include "planner/motion/step_motion.h"
 
+#include <malloc.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +21,10 @@ constexpr double kAngleTolerance = 1e-2;      // rad
 // The first interpolation step aims at this fraction of the spacing: projections move points a
 // little more than the reference does.
 constexpr double kFirstStepFraction = 0.8;
+// A projection that still lands too far after this many halvings has jumped (the reference moved
+// little, the solution a lot): the jump is bridged rather than halved further.
+constexpr int kHalvingsBeforeBridge = 2;
+constexpr int kMaxBridgeDepth = 1;  // a bridge never bridges
 
 std::string fixed3(double v) {
   char text[32];
@@ -48,18 +54,64 @@ SolverOptions projection_options(const SolverOptions& plan, const MotionOptions&
                                                        {"bound_frac", "1e-8"}});
   return out;
 }
+
+// The retry of a sample the fast projection did not solve: the plan's own objective weights,
+// Ipopt's adaptive barrier from its default start and at least 100 iterations. A warm start at the
+// margin of a bound (a collision pair at its margin, a force at the cone's edge) can stall the
+// small fixed barrier, and a reference deep inside an obstacle, weighted 1000 times, can keep the
+// iterates from the feasible side; with the plan's weight E20 holds and the sample lands beside
+// the obstacle, near the reference.
+SolverOptions retry_options(const SolverOptions& plan) {
+  SolverOptions out = plan;
+  out.max_iterations = std::max(out.max_iterations, 100);
+  return out;
+}
+}  // namespace
+
+namespace {
+// Every projection factorises its KKT system with MUMPS, which allocates its workspace (megabytes)
+// at each factorisation and frees it after: glibc then trims the heap's top back to the kernel
+// (brk) and takes it again at the next factorisation, page faults and page-table teardown
+// included. perf on the walk's motion: 25-30 % of the time in sysmalloc, brk and the kernel's
+// page-table code. Keeping freed memory (up to the thresholds below) makes the next factorisation
+// reuse it. Process-wide, set once.
+void keep_freed_heap() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);   // workspaces below 32 MB come from the heap...
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);  // ...which keeps up to 256 MB free at its top
+  });
+}
 }  // namespace
 
 StepMotionPlanner::StepMotionPlanner(const Scene& scene, const SolverOptions& solver,
                                      MotionOptions options)
-    : scene_(scene), solver_(scene, projection_options(solver, options)), options_(options) {
+    : scene_(scene),
+      solver_(scene, projection_options(solver, options)),
+      retry_solver_(scene, retry_options(solver)),
+      options_(options) {
   const std::string bad = check_motion_options(options_);
   if (!bad.empty()) throw std::invalid_argument("motion options: " + bad);
+  keep_freed_heap();
   q_ref_.resize(scene.system.nq());
 }
 
 double StepMotionPlanner::LinkPath::length() const {
   return std::hypot(to.x - from.x, to.y - from.y, h_to - h_from);
+}
+
+Placement StepMotionPlanner::LinkPath::placement_at(double s) const {
+  const double turn = std::remainder(to.theta - from.theta, 2.0 * M_PI);
+  return {from.x + s * (to.x - from.x), from.y + s * (to.y - from.y), from.theta + s * turn};
+}
+
+StepMotionPlanner::LinkPath StepMotionPlanner::LinkPath::part(double s0, double s1) const {
+  LinkPath out = *this;
+  out.from = placement_at(s0);
+  out.to = placement_at(s1);
+  out.h_from = h_from + s0 * (h_to - h_from);
+  out.h_to = h_from + s1 * (h_to - h_from);
+  return out;
 }
 
 StepMotionPlanner::LinkPath StepMotionPlanner::lift_path(const Contact& contact,
@@ -113,16 +165,13 @@ bool StepMotionPlanner::set_up(const PlanStep& a, const PlanStep& b, StepMotion*
 
 PostureResult StepMotionPlanner::project(const Segment& segment, double s,
                                          const Eigen::VectorXd& q_prev,
-                                         const MotionSample* previous) {
+                                         const MotionSample* previous, bool retry) {
   interpolate_configuration(scene_.system, *segment.q_start, *segment.q_ref_end, s, q_ref_);
   request_.contacts.resize(size_t(held_));
   if (segment.link) {
     const LinkPath& path = *segment.link;
     ContactTask& task = request_.contacts.emplace_back(path.task);
-    const double turn = std::remainder(path.to.theta - path.from.theta, 2.0 * M_PI);
-    task.placement = Placement{path.from.x + s * (path.to.x - path.from.x),
-                               path.from.y + s * (path.to.y - path.from.y),
-                               path.from.theta + s * turn};       // E10-E13
+    task.placement = path.placement_at(s);                        // E10-E13
     task.standoff = path.h_from + s * (path.h_to - path.h_from);  // E9 offset along s2's normal
   }
   for (int t = 0; t < held_; ++t) request_.contacts[size_t(t)].force_guess_W.clear();
@@ -137,7 +186,10 @@ PostureResult StepMotionPlanner::project(const Segment& segment, double s,
   request_.q_init = q_prev;
   request_.q_ref = q_ref_;  // E22: the interpolated configuration
   ++solves_;
-  return solver_.solve(request_);
+  PostureResult r = solver_.solve(request_);
+  if (r.status == PostureStatus::Solved || !retry) return r;
+  ++solves_;
+  return retry_solver_.solve(request_);
 }
 
 std::string StepMotionPlanner::describe(const SpacingMeasure& m) const {
@@ -148,6 +200,7 @@ std::string StepMotionPlanner::describe(const SpacingMeasure& m) const {
 
 bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSample>* samples,
                                     StepMotion* motion) {
+  if (bridge_depth_ == 0) segment_solves_ = solves_;  // each segment (not bridge) has a budget
   const double joint = options_.joint_spacing, point = options_.point_spacing;
   double guess = spacing_->measure(*segment.q_start, *segment.q_ref_end).ratio(joint, point);
   if (segment.link) guess = std::max(guess, segment.link->length() / point);
@@ -157,16 +210,29 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
   const size_t first = samples->size();
   Eigen::VectorXd q_prev = *segment.q_start;
   while (true) {
+    if (solves_ - segment_solves_ >= options_.max_solves) {
+      motion->status = MotionStatus::ProjectionFailed;
+      motion->message = std::string(segment.name) + " at s = " + fixed3(s) + ": more than " +
+                        std::to_string(options_.max_solves) + " projections";
+      return false;
+    }
     const double s_next = std::min(1.0, s + ds);
     std::string why;
     MotionStatus failure = MotionStatus::SpacingNotReached;
     if (segment.end && s_next >= 1.0) {  // join the fixed end
       const SpacingMeasure m = spacing_->measure(q_prev, *segment.end);
       if (m.ratio(joint, point) <= 1.0) return true;
+      if (halvings >= kHalvingsBeforeBridge &&
+          bridge(segment, s, 1.0, q_prev, *segment.end, samples, motion))
+        return true;
       why = "the last sample is " + describe(m) + " from the end";
     } else {
       const MotionSample* previous = samples->size() > first ? &samples->back() : nullptr;
-      PostureResult r = project(segment, s_next, q_prev, previous);
+      // The retry only once halving failed twice: most failures are a step too long, and a retry
+      // (the plan's weights) follows the reference less closely (measured: retrying every failure
+      // lost a step of the walk).
+      PostureResult r =
+          project(segment, s_next, q_prev, previous, halvings >= kHalvingsBeforeBridge);
       const SpacingMeasure m =
           r.status == PostureStatus::Solved ? spacing_->measure(q_prev, r.q) : SpacingMeasure{};
       if (r.status == PostureStatus::Solved && m.ratio(joint, point) <= 1.0) {
@@ -180,6 +246,15 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
         s = s_next;
         halvings = 0;
         ds = std::min(ds_max, 2.0 * ds);
+        if (!segment.end && s >= 1.0) return true;
+        continue;
+      }
+      if (r.status == PostureStatus::Solved && halvings >= kHalvingsBeforeBridge &&
+          bridge(segment, s, s_next, q_prev, r.q, samples, motion)) {
+        q_prev = r.q;
+        samples->push_back({std::move(r.q), std::move(r.forces), std::move(r.torques)});
+        s = s_next;
+        halvings = 0;
         if (!segment.end && s >= 1.0) return true;
         continue;
       }
@@ -199,17 +274,46 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
   }
 }
 
+bool StepMotionPlanner::bridge(const Segment& segment, double s0, double s1,
+                               const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                               std::vector<MotionSample>* samples, StepMotion* motion) {
+  if (bridge_depth_ >= kMaxBridgeDepth) return false;
+  Segment part{"bridge", &q_from, &q_to, &q_to, std::nullopt};
+  if (segment.link) part.link = segment.link->part(s0, s1);
+  const size_t before = samples->size();
+  ++bridge_depth_;
+  const bool joined = run_segment(part, samples, motion);
+  --bridge_depth_;
+  if (joined) return true;
+  samples->resize(before);  // the caller halves its step, as without a bridge
+  motion->status = MotionStatus::Solved;
+  motion->message.clear();
+  return false;
+}
+
 void StepMotionPlanner::plan_segments(const PlanStep& a, const PlanStep& b, StepMotion* motion) {
-  const bool lifts = a.action == "remove" && a.changed && options_.clearance > 0.0;
-  const bool lands = b.action == "add" && b.changed && options_.clearance > 0.0;
+  bool lifts = a.action == "remove" && a.changed && options_.clearance > 0.0;
+  bool lands = b.action == "add" && b.changed && options_.clearance > 0.0;
   std::vector<MotionSample>& samples = motion->samples;
-  if (lifts &&
-      !run_segment({"lift", &a.q, &a.q, nullptr, lift_path(*a.changed, a.q)}, &samples, motion))
-    return;
+  // A link whose placement pins it (a thigh between a seat and the sole of its leg: the knee and
+  // ankle cannot move it along the seat's normal with its placement held) cannot leave or approach
+  // along the normal: it leaves free instead (E20 keeps it at the collision margin), and the
+  // reason is kept for the message should the free travel fail as well.
+  std::string normal_failure;
+  const auto along_normal = [&](const char* name, const PlanStep& step,
+                                std::vector<MotionSample>* out) {
+    if (run_segment({name, &step.q, &step.q, nullptr, lift_path(*step.changed, step.q)}, out,
+                    motion))
+      return true;
+    normal_failure += std::string(normal_failure.empty() ? "" : "; ") + motion->message;
+    out->clear();
+    motion->status = MotionStatus::Solved;
+    motion->message.clear();
+    return false;
+  };
+  if (lifts) lifts = along_normal("lift", a, &samples);
   std::vector<MotionSample> landing;  // computed from b upwards, appended backwards
-  if (lands &&
-      !run_segment({"approach", &b.q, &b.q, nullptr, lift_path(*b.changed, b.q)}, &landing, motion))
-    return;
+  if (lands) lands = along_normal("approach", b, &landing);
   const Eigen::VectorXd q_from = samples.empty() ? a.q : samples.back().q;
   const Eigen::VectorXd q_to = landing.empty() ? b.q : landing.back().q;
   // A surface lifted from s2 and put down on s2 again (a foot step) glides at the clearance from
@@ -230,8 +334,12 @@ void StepMotionPlanner::plan_segments(const PlanStep& a, const PlanStep& b, Step
       motion->message.clear();
     }
   }
-  if (!travelled && !run_segment({"travel", &q_from, &q_to, &q_to, std::nullopt}, &samples, motion))
+  if (!travelled &&
+      !run_segment({"travel", &q_from, &q_to, &q_to, std::nullopt}, &samples, motion)) {
+    if (!normal_failure.empty())
+      motion->message += " (and along the normal: " + normal_failure + ")";
     return;
+  }
   samples.insert(samples.end(), std::make_move_iterator(landing.rbegin()),
                  std::make_move_iterator(landing.rend()));
 }

@@ -46,6 +46,8 @@ class StepMotionPlanner {
     Placement from, to;
     double h_from = 0.0, h_to = 0.0;
     double length() const;  // of the path of s1's origin (m)
+    Placement placement_at(double s) const;
+    LinkPath part(double s0, double s1) const;  // the path between s0 and s1, run over [0, 1]
   };
 
   // One piece of the path: the reference runs from q_start to q_ref_end; `end` is the fixed
@@ -64,22 +66,32 @@ class StepMotionPlanner {
   void plan_segments(const PlanStep& a, const PlanStep& b, StepMotion* motion);
   std::string describe(const SpacingMeasure& m) const;
   bool run_segment(const Segment& segment, std::vector<MotionSample>* samples, StepMotion* motion);
+  // q_to, at s1 (a projected sample, or the segment's fixed end), is farther than the spacing
+  // from q_from (its predecessor, at s0) although the interpolation step was halved: the
+  // projection jumped, or the last sample did not join the end. Joins the two by a sub-segment
+  // whose reference runs from q_from to q_to (the moving link from its s0 to its s1 parameters),
+  // its samples appended; false (nothing appended) when that fails too.
+  bool bridge(const Segment& segment, double s0, double s1, const Eigen::VectorXd& q_from,
+              const Eigen::VectorXd& q_to, std::vector<MotionSample>* samples, StepMotion* motion);
   // Projects the sample at s of the segment, warm started from q_prev (forces from `previous`
-  // when given).
+  // when given); with `retry`, a failed projection is solved again by retry_solver_.
   PostureResult project(const Segment& segment, double s, const Eigen::VectorXd& q_prev,
-                        const MotionSample* previous);
+                        const MotionSample* previous, bool retry);
   ContactTask lift_task(const Contact& contact, const Eigen::VectorXd& q) const;
   // s1 straight up from its placement at q to the clearance.
   LinkPath lift_path(const Contact& contact, const Eigen::VectorXd& q) const;
 
   const Scene& scene_;
-  PostureSolver solver_;
+  PostureSolver solver_;        // warm projections: few iterations, small fixed barrier
+  PostureSolver retry_solver_;  // a sample solver_ fails: adaptive barrier, more iterations
   MotionOptions options_;
   int held_ = 0;            // request_.contacts[0, held_): sigma, loaded, placements fixed
   PostureRequest request_;  // reused for every sample
   Eigen::VectorXd q_ref_;   // workspace of the interpolation
   std::optional<SampleSpacing> spacing_;  // surfaces of both steps' contacts
   int solves_ = 0;
+  int bridge_depth_ = 0;
+  int segment_solves_ = 0;  // solves_ when the current segment started
 };
 
 }  // namespace stanceplan

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/io/plan_writer.h"
+#include "planner/util/atomic_file.h"
 #include "planner/util/text_file.h"
 #include "tests/support/cli.h"
 #include "tests/support/forward_step.h"
@@ -22,12 +23,23 @@ TEST(MotionCommand, AddsTheCertifiedMotionToAPlanFileAndExportsItAndPlaysIt) {
   const fs::path dir = test::temp_dir("motion_command");
   const std::string plan = (dir / "plan.json").string(), moved = (dir / "moved.json").string();
   write_plan(fs.plan, fs.scenario, plan);
+  nlohmann::json original = nlohmann::json::parse(read_text_file(plan));
+  original["cone_generators"] = 3;  // not the default: the rewritten plan must keep it
+  write_file_atomically(plan, original.dump(1));
+  ASSERT_TRUE(original["entities"][0].contains("surfaces_file"));
   const test::CliResult r =
       test::run_cli({"motion", plan, "--out", moved, "--csv", (dir / "csv").string()});
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_THAT(r.out, HasSubstr("motion: 2 steps, "));
   EXPECT_THAT(r.out, HasSubstr("wrote " + moved + " (certified, with motion)"));
-  EXPECT_EQ(nlohmann::json::parse(read_text_file(moved))["format"], "stanceplan/plan@2");
+  const nlohmann::json rewritten = nlohmann::json::parse(read_text_file(moved));
+  EXPECT_EQ(rewritten["format"], "stanceplan/plan@2");
+  // What the plan says of its world is kept: each entity's surface file, the cone's generators.
+  EXPECT_EQ(rewritten["cone_generators"], 3);
+  for (size_t e = 0; e < original["entities"].size(); ++e)
+    EXPECT_EQ(rewritten["entities"][e].value("surfaces_file", ""),
+              original["entities"][e].value("surfaces_file", ""))
+        << "entity " << e;
   EXPECT_TRUE(fs::exists(dir / "csv" / "robot.csv"));
   EXPECT_EQ(test::run_cli({"certify", moved}).code, 0);
   const test::CliResult gif =

@@ -12,6 +12,7 @@
 #include "planner/search/stance_search.h"
 #include "tests/support/paths.h"
 #include "tests/support/planned_scenario.h"
+#include "tests/support/scenario_motion.h"
 
 namespace stanceplan {
 namespace {
@@ -28,6 +29,8 @@ TEST(DualArm, PlansCertifiesAndArm1HandsTheCylinderOverToArm2InTheAir) {
   const SearchResult result = StanceSearch(scenario, scenario.search).run();
   test::expect_certified(scenario, result, "dual_arm_cylinder");
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  // The motion between the steps: every step moves and certifies sample by sample.
+  test::expect_motion_certified(scenario, result, "dual_arm_cylinder");
   EXPECT_LE(result.nodes_expanded, scenario.search.max_nodes);
   const auto& steps = result.plan.steps;
   ASSERT_GE(steps.size(), 9u);  // 2 pads on, off A, 2 pads on, 2 pads off, on B, 2 pads off

@@ -12,6 +12,7 @@
 #include "planner/search/stance_search.h"
 #include "planner/solver/posture_solver.h"
 #include "tests/support/paths.h"
+#include "tests/support/scenario_motion.h"
 
 namespace stanceplan {
 namespace {
@@ -93,6 +94,8 @@ TEST(HandPenRegrasp, PlanCertifiedGraspMovesToTheFrontEnd) {
     EXPECT_GT(along(steps.back(), c), 0.02);  // every pad in the front half, clear of the centre
     EXPECT_LT(along(steps.back(), c), 0.08 - 0.004);  // and on the pen (16 cm long, 8 mm pads)
   }
+  // The motion between the steps: every step moves and certifies sample by sample.
+  test::expect_motion_certified(p.scenario, p.result, "pen");
 }
 
 }  // namespace
