@@ -46,8 +46,14 @@ TEST_F(EventRecord, FileNamesSortInEventOrderAndNameTheKind) {
 TEST_F(EventRecord, TheCaptionSaysWhatHappened) {
   EXPECT_EQ(app::event_caption(scene_, candidate_, 6),
             "Event 12 · candidate · remove r_sole from floor\n"
-            "infeasible, rejected: equilibrium · 35.2 ms\n"
+            "infeasible, rejected: equilibrium · 35.2 ms · target milestone 3 of 6\n"
             "stance: l_sole on floor");
+  // Milestones counted from 1, as the panel's "aiming at milestone k of N".
+  SearchEvent expansion = candidate_;
+  expansion.kind = SearchEventKind::Expansion;
+  expansion.node = 3;
+  EXPECT_THAT(app::event_caption(scene_, expansion, 6),
+              ::testing::HasSubstr("expanding node 3 · target milestone 3 of 6 · 7 nodes"));
 }
 
 TEST_F(EventRecord, TheJsonLineHoldsTheIndexFields) {
