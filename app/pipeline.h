@@ -54,6 +54,18 @@ struct Planned {
 };
 // Throws InputError on bad input (the scenario file, a stance placed into itself).
 Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostream& err);
+
+// The scenario's search options with a command's overrides (its optional `threads`, `time_limit`
+// and `max_nodes`: `plan`, the main job, the panel).
+template <class CommandOptions>
+SearchOptions search_options_with_overrides(const Scenario& scenario,
+                                            const CommandOptions& options) {
+  SearchOptions search = scenario.search;
+  if (options.threads) search.threads = *options.threads;
+  if (options.time_limit) search.time_limit_s = *options.time_limit;
+  if (options.max_nodes) search.max_nodes = *options.max_nodes;
+  return search;
+}
 // A search that ended without a plan: the steps from the root to the node closest to the goal,
 // marked partial and certified like a whole plan (only its certified prefix is written), at
 // `path`. False (said on `err`) when nothing was written.

@@ -92,15 +92,6 @@ void print_snapshot_stats(const SnapshotStats& s, const std::string& dir, std::o
       << " s after it\n";
 }
 
-// The scenario's search options with the command line's overrides.
-SearchOptions session_search_options(const Scenario& scenario, const PlanOptions& options) {
-  SearchOptions search = scenario.search;
-  if (options.threads) search.threads = *options.threads;
-  if (options.time_limit) search.time_limit_s = *options.time_limit;
-  if (options.max_nodes) search.max_nodes = *options.max_nodes;
-  return search;
-}
-
 // One line per search event (--verbose), or the progress line on a terminal.
 std::function<void(const SearchEvent&)> event_reporter(const Scenario& scenario,
                                                        const PlanOptions& options,
@@ -212,7 +203,7 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
     err << "stanceplan: no plan: " << guide->message << "\n";
     return planned;
   }
-  PlanSession session(scenario, session_search_options(scenario, options));
+  PlanSession session(scenario, search_options_with_overrides(scenario, options));
   std::optional<SnapshotWriter> snapshots;
   if (!options.snapshots.empty())
     snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});

@@ -56,14 +56,6 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-SearchOptions search_options(const Scenario& scenario, const PanelOptions& options) {
-  SearchOptions search = scenario.search;
-  if (options.threads) search.threads = *options.threads;
-  if (options.time_limit) search.time_limit_s = *options.time_limit;
-  if (options.max_nodes) search.max_nodes = *options.max_nodes;
-  return search;
-}
-
 // The live view's look: the cheaper preview style (render_style.h), same colours as the PNGs.
 render::RenderStyle live_style(const Scenario& scenario) {
   render::RenderStyle style = render::RenderStyle::preview();
@@ -105,7 +97,8 @@ PanelApp::PanelApp(const Scenario& scenario, const PanelOptions& options,
                    std::vector<ScriptAction> script)
     : scenario_(scenario),
       options_(options),
-      session_(std::make_unique<PlanSession>(scenario, search_options(scenario, options))),
+      session_(std::make_unique<PlanSession>(scenario,
+                                             search_options_with_overrides(scenario, options))),
       window_(options.width, options.height, "stanceplan \u2014 " + scenario.name),
       meshes_(std::make_shared<render::MeshLibrary>()),
       style_(live_style(scenario)),
