@@ -111,14 +111,12 @@ AngleRange normal_angle_range(const Model& model, int link_a, const Eigen::Vecto
 }
 
 const AngleRange& NormalAngleTable::between(SurfaceRef a, SurfaceRef b) {
-  if (b.index < a.index) std::swap(a, b);
-  const auto key = std::make_tuple(a.entity, a.index, b.index);
-  auto it = ranges_.find(key);
-  if (it != ranges_.end()) return it->second;
-  const Surface& sa = scene_.surfaces.get(a);
-  const Surface& sb = scene_.surfaces.get(b);
-  const Model& model = *scene_.system.entity(a.entity).model;
-  return ranges_[key] = normal_angle_range(model, sa.link, sa.normal_L(), sb.link, sb.normal_L());
+  return ranges_.get(a, b, [this](SurfaceRef lo, SurfaceRef hi) {
+    const Surface& sa = scene_.surfaces.get(lo);
+    const Surface& sb = scene_.surfaces.get(hi);
+    const Model& model = *scene_.system.entity(lo.entity).model;
+    return normal_angle_range(model, sa.link, sa.normal_L(), sb.link, sb.normal_L());
+  });
 }
 
 }  // namespace stanceplan

@@ -8,11 +8,10 @@
 // flat on it needs an ankle pitch of 90 degrees. RBPRM (Tonneau et al., T-RO 2018) tests reach
 // before any whole-body solve; this is the same idea for orientation, and exact (no heuristic).
 #include <Eigen/Core>
-#include <map>
-#include <tuple>
 
 #include "planner/model/model.h"
 #include "planner/scene/scene.h"
+#include "planner/search/surface_pair_cache.h"
 
 namespace stanceplan {
 
@@ -46,7 +45,7 @@ class NormalAngleTable {
 
  private:
   const Scene& scene_;
-  std::map<std::tuple<int, int, int>, AngleRange> ranges_;
+  SurfacePairCache<AngleRange> ranges_;
 };
 
 }  // namespace stanceplan

@@ -41,15 +41,12 @@ double link_origin_reach(const Model& model, int link_a, int link_b) {
 }
 
 double ReachTable::between(SurfaceRef a, SurfaceRef b) {
-  if (b.index < a.index) std::swap(a, b);
-  const auto key = std::make_tuple(a.entity, a.index, b.index);
-  auto it = reach_.find(key);
-  if (it != reach_.end()) return it->second;
-  const Surface& sa = scene_.surfaces.get(a);
-  const Surface& sb = scene_.surfaces.get(b);
-  const Model& model = *scene_.system.entity(a.entity).model;
-  return reach_[key] =
-             surface_extent(sa) + link_origin_reach(model, sa.link, sb.link) + surface_extent(sb);
+  return reach_.get(a, b, [this](SurfaceRef lo, SurfaceRef hi) {
+    const Surface& sa = scene_.surfaces.get(lo);
+    const Surface& sb = scene_.surfaces.get(hi);
+    const Model& model = *scene_.system.entity(lo.entity).model;
+    return surface_extent(sa) + link_origin_reach(model, sa.link, sb.link) + surface_extent(sb);
+  });
 }
 
 }  // namespace stanceplan

@@ -5,11 +5,10 @@
 // the workspace of its chain from the fixed part of the robot), made sound and computed once from
 // the model: the bound holds at every configuration, whatever the joint limits and the collision
 // model allow, so a candidate beyond it can never be realised.
-#include <map>
-#include <tuple>
 
 #include "planner/model/model.h"
 #include "planner/scene/scene.h"
+#include "planner/search/surface_pair_cache.h"
 
 namespace stanceplan {
 
@@ -32,7 +31,7 @@ class ReachTable {
 
  private:
   const Scene& scene_;
-  std::map<std::tuple<int, int, int>, double> reach_;
+  SurfacePairCache<double> reach_;
 };
 
 }  // namespace stanceplan
