@@ -13,6 +13,7 @@
 #include "planner/io/scenario.h"
 #include "planner/motion/plan_motion.h"
 #include "planner/search/stance_search.h"
+#include "planner/util/heap_tuning.h"
 
 namespace stanceplan {
 namespace {
@@ -24,6 +25,7 @@ double percentile(std::vector<double> v, double fraction) {
 }
 
 void plan_motion(benchmark::State& state, const std::string& name) {
+  keep_freed_heap_for_solvers();  // as the application does at start-up
   const Scenario scenario = load_scenario(bench::scenario_path(name));
   SearchOptions options = scenario.search;
   options.threads = 2;

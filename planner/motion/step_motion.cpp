@@ -1,11 +1,9 @@
 #include "planner/motion/step_motion.h"
 
-#include <malloc.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -68,22 +66,6 @@ SolverOptions retry_options(const SolverOptions& plan) {
 }
 }  // namespace
 
-namespace {
-// Every projection factorises its KKT system with MUMPS, which allocates its workspace (megabytes)
-// at each factorisation and frees it after: glibc then trims the heap's top back to the kernel
-// (brk) and takes it again at the next factorisation, page faults and page-table teardown
-// included. perf on the walk's motion: 25-30 % of the time in sysmalloc, brk and the kernel's
-// page-table code. Keeping freed memory (up to the thresholds below) makes the next factorisation
-// reuse it. Process-wide, set once.
-void keep_freed_heap() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);   // workspaces below 32 MB come from the heap...
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);  // ...which keeps up to 256 MB free at its top
-  });
-}
-}  // namespace
-
 StepMotionPlanner::StepMotionPlanner(const Scene& scene, const SolverOptions& solver,
                                      MotionOptions options)
     : scene_(scene),
@@ -92,7 +74,6 @@ StepMotionPlanner::StepMotionPlanner(const Scene& scene, const SolverOptions& so
       options_(options) {
   const std::string bad = check_motion_options(options_);
   if (!bad.empty()) throw std::invalid_argument("motion options: " + bad);
-  keep_freed_heap();
   q_ref_.resize(scene.system.nq());
 }
 
