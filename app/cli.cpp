@@ -141,8 +141,8 @@ void add_main_job(CLI::App& cli, MainJobOptions& options) {
   cli.add_flag("!--no-rejected-snapshots", options.snapshots_rejected,
                "main job: list rejected candidates without drawing them");
   cli.add_flag("!--no-motion", options.motion,
-               "main job without a window: no motion between the steps (plan format @1, a GIF of "
-               "the steps)");
+               "main job: no motion between the steps (plan format @1; without a window, a GIF "
+               "of the steps; in the panel, a timeline of the steps only)");
   cli.add_option("--exit-after-frames", options.exit_after_frames,
                  "main job with a display: close the panel after N frames (scripted runs)")
       ->check(CLI::Range(1, 100000000));

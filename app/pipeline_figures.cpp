@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/pipeline.h"
+#include "planner/plan/plan_timeline.h"
 #include "render/figures/step_caption.h"
 #include "render/image/gif_writer.h"
 #include "render/image/png_io.h"
@@ -66,12 +67,10 @@ std::vector<render::Image> motion_frames(const render::PlanView& plan,
   const int per_step = std::max(1, int(std::lround(files.fps * files.step_seconds)));
   std::vector<render::Image> frames{sequence.render_step(0)};
   for (int i = 1; i < sequence.num_steps(); ++i) {
-    const PlanStep& step = plan.plan.steps[size_t(i)];
-    const int n = step.motion ? int(step.motion->samples.size()) : 0;
     const std::string caption = render::step_caption(plan, i);
-    for (int k = 1; k < per_step && n > 0; ++k) {
-      const int at = int(std::lround(double(k) * (n + 1) / per_step));  // 0: step i-1, n+1: step i
-      if (at >= 1 && at <= n) frames.push_back(sequence.render_motion_sample(i, at - 1, caption));
+    for (int k = 1; k < per_step; ++k) {
+      const TimelinePoint at = timeline_point(plan.plan, i - 1 + double(k) / per_step);
+      if (at.sample >= 0) frames.push_back(sequence.render_motion_sample(i, at.sample, caption));
     }
     frames.push_back(sequence.render_step(i));
   }

@@ -63,6 +63,21 @@ render::RenderStyle live_style(const Scenario& scenario) {
   return style;
 }
 
+// A sample of the motion into a step (`at.sample` >= 0): its configuration and forces on the
+// stance of the step before, every contact loaded (as the GIF draws it), and a caption line.
+void show_motion_sample(const Plan& plan, const TimelinePoint& at, ViewRequest& r) {
+  if (at.sample < 0) return;
+  const StepMotion& motion = *plan.steps[static_cast<size_t>(at.step)].motion;
+  const MotionSample& sample = motion.samples[static_cast<size_t>(at.sample)];
+  r.q = sample.q;
+  r.forces = sample.forces;
+  r.contacts.clear();
+  for (const Contact& c : plan.steps[static_cast<size_t>(at.step - 1)].stance.contacts())
+    r.contacts.push_back({c, true});
+  r.caption += "\nmotion into step " + std::to_string(at.step) + ": sample " +
+               std::to_string(at.sample + 1) + " of " + std::to_string(motion.samples.size());
+}
+
 // One framing for the whole search (so that consecutive pictures line up): the robots at the
 // initial configuration and at every milestone, seen from three-quarter view.
 render::Camera initial_camera(const Scenario& scenario, const render::RenderStyle& style,
@@ -177,6 +192,7 @@ void PanelApp::pace(double dt_s, std::ostream& out, std::ostream& err) {
     on_search_finished(out, err);
     finish_handled_ = true;
   }
+  sync_motion(out, err);
 }
 
 // A frame is drawn when something changed: input, a search event, the end of the search, a new
@@ -188,10 +204,12 @@ bool PanelApp::needs_frame() {
                        window_.input_events() != seen_input_ || view_.has_news() ||
                        mirror_.events().size() != drawn_events_ ||
                        mirror_.finished() != drawn_finished_ || !pointer_moves_.empty() ||
-                       !pending_screenshot_.empty() || state_.open_tab >= 0;
+                       motion_steps_shown_ != drawn_motion_steps_ || !pending_screenshot_.empty() ||
+                       state_.open_tab >= 0;
   seen_input_ = window_.input_events();
   drawn_events_ = mirror_.events().size();
   drawn_finished_ = mirror_.finished();
+  drawn_motion_steps_ = motion_steps_shown_;
   if (changed) settle_frames_ = 3;
   if (settle_frames_ == 0) return false;
   --settle_frames_;
@@ -212,15 +230,20 @@ void PanelApp::draw_frame(double dt_s, bool last, std::ostream& out, std::ostrea
     if (state_.source == ViewSource::Node) {
       const std::vector<int> path = mirror_.tree().plan_path();
       const auto on_plan = std::find(path.begin(), path.end(), state_.selected_node);
-      if (on_plan != path.end()) state_.plan_step = static_cast<int>(on_plan - path.begin());
+      if (on_plan != path.end()) {
+        state_.plan_step = static_cast<int>(on_plan - path.begin());
+        state_.step_fraction = 0.0;
+      }
     }
   }
   frame(last, out, err);
 }
 
-// The window closed: cancel the search (it stops between solver iterations) and join its thread.
+// The window closed: cancel the search (it stops between solver iterations) and join its thread;
+// the motion's thread stops after the step it is computing.
 double PanelApp::stop_search() {
   const Clock::time_point start = Clock::now();
+  motion_.reset();
   session_.reset();
   return ms_since(start);
 }
@@ -238,13 +261,19 @@ long PanelApp::shown_event() const {
                  : -1;
     case ViewSource::Event:
       return state_.selected_event;
-    case ViewSource::PlanStep: {
+    case ViewSource::PlanStep: {  // a motion sample shows the event of the step it goes to
       const std::vector<int> path = tree.plan_path();
-      if (state_.plan_step < 0 || state_.plan_step >= static_cast<int>(path.size())) return -1;
-      return static_cast<long>(tree.node(path[state_.plan_step])->event);
+      const int step = timeline_at().step;
+      if (step < 0 || step >= static_cast<int>(path.size())) return -1;
+      return static_cast<long>(tree.node(path[step])->event);
     }
   }
   return -1;
+}
+
+TimelinePoint PanelApp::timeline_at() const {
+  if (!plan_) return {state_.plan_step, -1};
+  return timeline_point(*plan_, state_.plan_step + state_.step_fraction);
 }
 
 std::string PanelApp::shown_title(long shown) const {
@@ -257,9 +286,13 @@ std::string PanelApp::shown_title(long shown) const {
       return "Node " + std::to_string(state_.selected_node);
     case ViewSource::Event:
       return "Rejected candidate (event " + std::to_string(e.number) + ")";
-    case ViewSource::PlanStep:
-      return "Plan step " + std::to_string(state_.plan_step) + " (node " + std::to_string(e.node) +
-             ")";
+    case ViewSource::PlanStep: {
+      const TimelinePoint at = timeline_at();
+      if (at.sample >= 0)
+        return "Motion to plan step " + std::to_string(at.step) + ", sample " +
+               std::to_string(at.sample + 1) + " (node " + std::to_string(e.node) + ")";
+      return "Plan step " + std::to_string(at.step) + " (node " + std::to_string(e.node) + ")";
+    }
   }
   return "";
 }
@@ -274,9 +307,11 @@ ViewRequest PanelApp::view_request(long shown, const Rect& area) const {
     r.contacts = e.contacts;
     r.forces = e.forces;
     const int milestones = static_cast<int>(scenario_.milestones.size());
-    r.caption = state_.source == ViewSource::PlanStep && plan_
-                    ? render::step_caption(app::plan_view(scenario_, *plan_), state_.plan_step)
+    const bool on_plan = state_.source == ViewSource::PlanStep && plan_;
+    r.caption = on_plan
+                    ? render::step_caption(app::plan_view(scenario_, *plan_), timeline_at().step)
                     : event_caption(scenario_.scene, e, milestones);
+    if (on_plan) show_motion_sample(*plan_, timeline_at(), r);
     // The milestone the search aims at, as a ghost (not over the plan's steps).
     if (state_.source != ViewSource::PlanStep)
       if (const auto aimed = aimed_milestone(scenario_.milestones, e.milestone)) {
@@ -303,8 +338,10 @@ void PanelApp::update_view(long shown, const Rect& area, bool wait) {
   ViewRequest request = view_request(shown, area);
   const render::Camera& c = request.camera;
   std::ostringstream key;
-  key << shown << ' ' << int(state_.source) << ' ' << state_.plan_step << ' ' << request.width
-      << 'x' << request.height << ' ' << c.eye.transpose() << ' ' << c.target.transpose();
+  const TimelinePoint at = timeline_at();
+  key << shown << ' ' << int(state_.source) << ' ' << at.step << ' ' << at.sample << ' '
+      << motion_steps_shown_ << ' ' << request.width << 'x' << request.height << ' '
+      << c.eye.transpose() << ' ' << c.target.transpose();
   if (key.str() != last_view_key_) {
     last_view_key_ = key.str();
     last_view_id_ = view_.request(std::move(request));
@@ -348,7 +385,7 @@ void PanelApp::frame(bool last, std::ostream& out, std::ostream& err) {
 void PanelApp::draw_windows(long shown, const PanelLayout& layout) {
   draw_view_section(layout.view, texture_, camera_, state_);
   const int milestones = static_cast<int>(scenario_.milestones.size());
-  draw_plan_bar_section(layout.bar, scenario_.scene, mirror_, milestones, state_);
+  draw_plan_bar_section(layout.bar, scenario_.scene, mirror_, plan_.get(), milestones, state_);
   ImGui::SetNextWindowPos(ImVec2(layout.search.x, layout.search.y));
   ImGui::SetNextWindowSize(ImVec2(layout.search.w, layout.search.h));
   ImGui::Begin("Search", nullptr, kSideWindow);
@@ -396,9 +433,9 @@ void PanelApp::handle_shortcuts() {
   if (!live && pressed('R')) state_.rerun = true;
   if (plan_ && (named(ImGuiKey_RightArrow) || named(ImGuiKey_LeftArrow))) {
     const int last = static_cast<int>(plan_->steps.size()) - 1;
-    const int delta = named(ImGuiKey_RightArrow) ? 1 : -1;
-    state_.plan_step = std::clamp(state_.plan_step + delta, 0, last);
-    state_.source = ViewSource::PlanStep;
+    // Between two steps (in a motion), the arrows go to the step before or after.
+    const int delta = named(ImGuiKey_RightArrow) ? 1 : state_.step_fraction > 0.0 ? 0 : -1;
+    show_plan_step(state_, std::clamp(state_.plan_step + delta, 0, last));
     state_.playing = false;
   }
 }

@@ -31,6 +31,9 @@ struct PanelOptions {
   // A panel script (panel_script.h): actions run in order against the live window, one line
   // printed per action; read and checked before the window opens.
   std::string script;
+  // The motion between the plan's steps, computed once the plan is found (the timeline plays it
+  // as it arrives; plan.json is saved again with it).
+  bool motion = true;
 };
 
 // Runs the panel until the window is closed (or exit_after_frames, or a script's `quit`): 0 when

@@ -23,8 +23,10 @@
 #include "app/gui/session_mirror.h"
 #include "app/gui/view_renderer.h"
 #include "app/gui/view_texture.h"
+#include "app/live/motion_session.h"
 #include "app/live/plan_session.h"
 #include "planner/io/scenario.h"
+#include "planner/plan/plan_timeline.h"
 #include "render/scene/mesh_library.h"
 
 namespace stanceplan::app::panel_detail {
@@ -49,6 +51,7 @@ class PanelApp {
   void frame(bool last, std::ostream& out, std::ostream& err);
   void draw_windows(long shown, const gui::PanelLayout& layout);
   void handle_shortcuts();
+  TimelinePoint timeline_at() const;  // where the timeline is (a step, or a motion sample)
   long shown_event() const;
   std::string shown_title(long shown) const;
   gui::ViewRequest view_request(long shown, const gui::Rect& area) const;
@@ -56,6 +59,8 @@ class PanelApp {
   double stop_search();
   // panel_requests.cpp
   void on_search_finished(std::ostream& out, std::ostream& err);
+  void sync_motion(std::ostream& out, std::ostream& err);
+  void on_motion_finished(const MotionProgress& progress, std::ostream& out, std::ostream& err);
   void carry_out_requests(long shown, const gui::Rect& area);
   void carry_out_exports(long shown, const gui::Rect& area);
   void carry_out_failure_requests();
@@ -84,6 +89,12 @@ class PanelApp {
   gui::PanelState state_;
   gui::OrbitCamera camera_, framed_;
   std::shared_ptr<const Plan> plan_;  // the plan found, once the search has found it
+  // The motion between its steps, computed after the search (--no-motion: never); plan_ is
+  // replaced by a copy with the motions computed so far as they arrive.
+  std::unique_ptr<MotionSession> motion_;
+  int motion_steps_shown_ = 0;  // the motions plan_ holds (steps tried)
+  bool motion_handled_ = false;
+  int drawn_motion_steps_ = 0;
   Clock::time_point search_start_;
   double search_elapsed_s_ = 0.0;
   bool finish_handled_ = false;

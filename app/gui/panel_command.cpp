@@ -51,6 +51,9 @@ void add_panel_subcommand(CLI::App& cli, PanelOptions& options) {
          "window size (default: 1280x720)")
       ->type_name("WxH");
   cmd->add_flag("--paused", options.start_paused, "hold the search before its first event");
+  cmd->add_flag("!--no-motion", options.motion,
+                "no motion between the plan's steps (computed once the plan is found, played by "
+                "the timeline, saved in plan.json)");
   cmd->add_option("--speed-limit", options.speed_limit,
                   "events per second while running (default: no limit)")
       ->check(CLI::NonNegativeNumber);

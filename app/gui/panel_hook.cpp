@@ -13,6 +13,7 @@ int run_panel(const PanelRequest& request, std::ostream& out, std::ostream& err)
   options.threads = request.threads;
   options.exit_after_frames = request.exit_after_frames;
   options.screenshot = request.screenshot;
+  options.motion = request.motion;
   return run_panel(options, out, err);
 }
 

@@ -26,8 +26,9 @@ void PanelApp::on_search_finished(std::ostream& out, std::ostream& err) {
     return;
   }
   plan_ = std::make_shared<const Plan>(result.plan);
-  state_.plan_step = static_cast<int>(result.plan.steps.size()) - 1;
-  if (state_.source == ViewSource::Latest) state_.source = ViewSource::PlanStep;
+  const ViewSource was = state_.source;
+  show_plan_step(state_, static_cast<int>(result.plan.steps.size()) - 1);
+  if (was != ViewSource::Latest) state_.source = was;
   try {
     std::filesystem::create_directories(options_.out_dir);
     const std::string path = (std::filesystem::path(options_.out_dir) / "plan.json").string();
@@ -40,10 +41,50 @@ void PanelApp::on_search_finished(std::ostream& out, std::ostream& err) {
     state_.messages.push_back("plan found: " + std::to_string(result.plan.steps.size()) +
                               " steps, certified, saved " + path);
     out << "panel: " << state_.messages.back() << "\n";
+    if (options_.motion && result.plan.steps.size() > 1) {
+      motion_ = std::make_unique<MotionSession>(scenario_.scene, scenario_.solver, MotionOptions{},
+                                                result.plan);
+      motion_->start();
+      state_.messages.push_back("computing the motion between the steps\u2026");
+    }
   } catch (const std::exception& e) {
     state_.messages.push_back(std::string("error: ") + e.what());
     err << "stanceplan: error: " << e.what() << "\n";
   }
+}
+
+// Takes the motions computed since the last turn (the timeline plays them at once).
+void PanelApp::sync_motion(std::ostream& out, std::ostream& err) {
+  if (!motion_) return;
+  const MotionProgress progress = motion_->progress();
+  const bool finishing = progress.finished && !motion_handled_;
+  if (progress.steps_done == motion_steps_shown_ && !finishing) return;
+  plan_ = std::make_shared<const Plan>(motion_->plan());
+  motion_steps_shown_ = progress.steps_done;
+  if (finishing) {
+    motion_handled_ = true;
+    on_motion_finished(progress, out, err);
+  }
+}
+
+// Every step tried: the plan is saved again with its motion (plan@2), certified sample by sample.
+void PanelApp::on_motion_finished(const MotionProgress& progress, std::ostream& out,
+                                  std::ostream& err) {
+  if (progress.cancelled) return;
+  const int motions = static_cast<int>(plan_->steps.size()) - 1;
+  std::string moved = "motion: " + std::to_string(motions - progress.steps_failed) + " of " +
+                      std::to_string(motions) + " steps moved";
+  if (progress.steps_failed > 0)
+    moved += " (first failure, kept without motion: " + progress.first_failure + ")";
+  const std::string path = (std::filesystem::path(options_.out_dir) / "plan.json").string();
+  std::ostringstream why;
+  if (write_certified_plan(*plan_, scenario_, path, false, why) != kExitSuccess) {
+    state_.messages.push_back("error: " + moved + ", not saved: " + why.str());
+    err << why.str();
+    return;
+  }
+  state_.messages.push_back(moved + ", certified, saved " + path);
+  out << "panel: " << state_.messages.back() << "\n";
 }
 
 void PanelApp::carry_out_requests(long shown, const Rect& area) {
@@ -99,6 +140,9 @@ void PanelApp::carry_out_failure_requests() {
 // A new search from the start in the same session (same solver processes and gate): the panel
 // forgets the old one's events, tree, plan and selection; the camera and speed limit stay.
 void PanelApp::rerun() {
+  motion_.reset();  // joined before the search may fork again (fork_gate.h)
+  motion_steps_shown_ = 0;
+  motion_handled_ = false;
   session_->restart();
   driver_.restarted();
   mirror_ = SessionMirror();
@@ -111,6 +155,7 @@ void PanelApp::rerun() {
   state_.selected_node = -1;
   state_.selected_event = -1;
   state_.plan_step = 0;
+  state_.step_fraction = 0.0;
   state_.playing = false;
   state_.messages.push_back("search started again");
 }

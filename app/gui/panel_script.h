@@ -7,8 +7,8 @@
 //   step event | step expansion | next milestone
 //   speed N                  events per second while running, 0 = no limit
 //   wait SECONDS             let the panel run (and the search, if running) this long
-//   wait-for plan | failure | end | event N
-//   select node N | select event N | timeline STEP
+//   wait-for plan | failure | end | event N | motion
+//   select node N | select event N | timeline POSITION   (a step, or 2.5: half-way to step 3)
 //   orbit DX DY | zoom CLICKS | reset view     the mouse, driven through ImGui like a user's
 //   tab inspector | tab plots
 //   print                    one line: what the view and the inspector show (event, contacts)
@@ -36,6 +36,7 @@ enum class ScriptVerb {
   WaitForFailure,
   WaitForEnd,
   WaitForEvent,
+  WaitForMotion,
   SelectNode,
   SelectEvent,
   Timeline,

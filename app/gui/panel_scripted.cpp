@@ -33,6 +33,8 @@ ScriptProgress PanelApp::progress() const {
   now.events = mirror_.events().size();
   now.finished = mirror_.finished();
   now.found = now.finished && mirror_.result()->status == PlanStatus::Found;
+  now.motion_off = !options_.motion;
+  now.motion_done = now.found && (!motion_ || motion_handled_);
   now.stepping =
       driver_.mode() == RunMode::UntilExpansion || driver_.mode() == RunMode::UntilMilestone;
   now.frame_work = !pointer_moves_.empty() || !pending_screenshot_.empty() || state_.open_tab >= 0;
@@ -47,6 +49,10 @@ std::string PanelApp::shown_summary() const {
   if (shown < 0) return "the initial configuration (no event yet)";
   const SearchEvent& e = mirror_.events()[shown];
   std::ostringstream line;
+  if (const TimelinePoint at = timeline_at();
+      state_.source == ViewSource::PlanStep && at.sample >= 0)
+    line << "motion into step " << at.step << ", sample " << at.sample + 1 << " of "
+         << plan_->steps[static_cast<size_t>(at.step)].motion->samples.size() << "; ";
   line << "event " << e.number << " (" << to_string(e.kind) << ", node " << e.node << "): ";
   const NodeDetails details = node_details(scenario_.scene, e);
   if (details.contacts.empty()) line << "no contact";
@@ -107,6 +113,7 @@ void PanelApp::carry_out(const ScriptAction& action, std::ostream& out) {
       return;
     case ScriptVerb::Wait:
     case ScriptVerb::WaitForPlan:
+    case ScriptVerb::WaitForMotion:
     case ScriptVerb::WaitForFailure:
     case ScriptVerb::WaitForEnd:
     case ScriptVerb::WaitForEvent:
@@ -138,8 +145,12 @@ void PanelApp::carry_out_view_action(const ScriptAction& action, std::ostream& o
         out << "panel: script line " << action.line << ": no plan yet, no timeline\n";
         return;
       }
-      state_.plan_step = std::min(index, static_cast<int>(plan_->steps.size()) - 1);
-      state_.source = ViewSource::PlanStep;
+      if (action.a >= static_cast<double>(plan_->steps.size() - 1)) {
+        show_plan_step(state_, static_cast<int>(plan_->steps.size()) - 1);
+      } else {
+        show_plan_step(state_, index);  // the whole steps; the rest, the way through the motion
+        state_.step_fraction = action.a - std::floor(action.a);
+      }
       state_.playing = false;
       return;
     case ScriptVerb::TabInspector:

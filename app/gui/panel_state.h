@@ -24,10 +24,11 @@ struct PanelState {
   int tree_focus = -1;        // the node the tree keeps in sight: the selection, or the newest
   bool reveal_focus = false;  // the focus changed: open its ancestors and scroll to it
 
-  // Timeline over the plan found.
+  // Timeline over the plan found: at position plan_step + step_fraction (planner/plan/
+  // plan_timeline.h), step_fraction in [0, 1) the way through the motion into the next step.
   int plan_step = 0;
+  double step_fraction = 0.0;
   bool playing = false;
-  double play_time_s = 0.0;  // time spent on the current step while playing
   float seconds_per_step = 1.0f;
 
   float speed_limit = 0.0f;  // events per second while running; 0: none
@@ -52,5 +53,12 @@ struct PanelState {
 
   std::vector<std::string> messages;  // export results and warnings, newest last
 };
+
+// The view and the timeline on a step of the plan (its posture, not a sample of a motion).
+inline void show_plan_step(PanelState& state, int step) {
+  state.source = ViewSource::PlanStep;
+  state.plan_step = step;
+  state.step_fraction = 0.0;
+}
 
 }  // namespace stanceplan::gui

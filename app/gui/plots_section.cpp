@@ -159,15 +159,14 @@ std::string step_name(double x, size_t steps) {
 PlotOptions plan_options(const PanelState& state) {
   PlotOptions options;
   options.height = remaining_height();
-  options.x_name = "";                 // the readout's label names the step, as the figures do
-  options.marker_x = state.plan_step;  // where the timeline is
+  options.x_name = "";  // the readout's label names the step, as the figures do
+  options.marker_x = state.plan_step + state.step_fraction;  // where the timeline is
   return options;
 }
 
 void pick_plan_step(const std::vector<PlotTrace>& traces, const PlotPick& pick, PanelState& state) {
   if (!pick.clicked) return;
-  state.source = ViewSource::PlanStep;
-  state.plan_step = static_cast<int>(traces[pick.trace].series->points[pick.point].x);
+  show_plan_step(state, static_cast<int>(traces[pick.trace].series->points[pick.point].x));
   state.playing = false;  // the step picked stays shown
 }
 

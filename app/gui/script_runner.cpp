@@ -38,6 +38,10 @@ bool ScriptRunner::complete(const ScriptAction& action, const ScriptProgress& no
       return now.finished;
     case ScriptVerb::WaitForEnd:
       return now.finished;
+    case ScriptVerb::WaitForMotion:
+      if (now.motion_off) cannot("the panel computes no motion (--no-motion)");
+      if (now.finished && !now.found) cannot("the search ended without a plan: " + now.status);
+      return now.motion_done;
     case ScriptVerb::WaitForEvent:
       if (now.events >= static_cast<size_t>(action.a)) return true;
       if (now.finished) cannot("the search ended after " + std::to_string(now.events) + " events");

@@ -14,13 +14,15 @@ namespace stanceplan::gui {
 
 // What the panel reports to the runner at each loop turn.
 struct ScriptProgress {
-  double now_s = 0.0;       // seconds on any steady clock
-  size_t events = 0;        // events published by the search (of the current run)
-  bool finished = false;    // the search ended
-  bool found = false;       // ... with a plan
-  bool stepping = false;    // a step expansion / next milestone is still going
-  bool frame_work = false;  // pointer moves or a screenshot still to draw
-  std::string status;       // "paused", "running", "plan found", "no plan (cancelled)", ...
+  double now_s = 0.0;        // seconds on any steady clock
+  size_t events = 0;         // events published by the search (of the current run)
+  bool finished = false;     // the search ended
+  bool found = false;        // ... with a plan
+  bool motion_done = false;  // the motion between the plan's steps is computed (every step tried)
+  bool motion_off = false;   // the panel computes none (--no-motion)
+  bool stepping = false;     // a step expansion / next milestone is still going
+  bool frame_work = false;   // pointer moves or a screenshot still to draw
+  std::string status;        // "paused", "running", "plan found", "no plan (cancelled)", ...
 };
 
 // A waiting action that can no longer complete (wait-for plan after a failure ...).

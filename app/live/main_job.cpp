@@ -68,7 +68,7 @@ int run_main_job(const MainJobOptions& options, std::ostream& out, std::ostream&
       options.scenario.empty() ? default_scenario_path() : options.scenario;
   if (!options.headless && display_available())
     return run_panel({scenario, options.out_dir, options.threads, options.snapshots_rejected,
-                      options.exit_after_frames, options.screenshot},
+                      options.exit_after_frames, options.screenshot, options.motion},
                      out, err);
   return run_headless(scenario, options, out, err);
 }

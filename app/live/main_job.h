@@ -17,7 +17,7 @@ struct MainJobOptions {
   bool headless = false;
   std::optional<int> threads;
   bool snapshots_rejected = true;
-  bool motion = true;         // headless: the motion between steps in the plan and the GIF
+  bool motion = true;         // the motion between steps: in the plan and the GIF, or the panel
   int exit_after_frames = 0;  // panel: close the window after N frames (scripted runs)
   std::string screenshot;     // panel: save the window as PNG after the last frame
 };

@@ -15,6 +15,7 @@ struct PanelRequest {
   bool snapshots_rejected = true;
   int exit_after_frames = 0;  // scripted runs (tests): close the window after N frames
   std::string screenshot;     // and save it as PNG after the last one
+  bool motion = true;         // the motion between the steps, played by the timeline
 };
 
 // Opens the window, runs a PlanSession on `request.scenario` under the panel's control and

@@ -30,9 +30,9 @@ TEST(PanelScript, EveryActionOfTheGrammarParses) {
       "wait-for plan\nwait-for failure\nwait-for end\nwait-for event 12\n"
       "select node 3\nselect event 0\ntimeline 4\norbit -120 40.5\nzoom -2\nreset view\n"
       "tab plots\ntab inspector\nscreenshot out/a.png\nexport view\nexport strip\ncancel\n"
-      "rerun\nprint\nquit\n",
+      "rerun\nprint\nwait-for motion\ntimeline 2.25\nquit\n",
       "s.txt");
-  ASSERT_EQ(a.size(), 27u);
+  ASSERT_EQ(a.size(), 29u);
   EXPECT_EQ(a[0].verb, ScriptVerb::Run);
   EXPECT_EQ(a[0].line, 2);
   EXPECT_EQ(a[2].verb, ScriptVerb::StepEvent);
@@ -51,6 +51,9 @@ TEST(PanelScript, EveryActionOfTheGrammarParses) {
   EXPECT_EQ(a[20].verb, ScriptVerb::Screenshot);
   EXPECT_EQ(a[20].path, "out/a.png");
   EXPECT_EQ(a[25].verb, ScriptVerb::Print);
+  EXPECT_EQ(a[26].verb, ScriptVerb::WaitForMotion);
+  EXPECT_EQ(a[27].verb, ScriptVerb::Timeline);
+  EXPECT_EQ(a[27].a, 2.25);  // a quarter of the way through the motion into step 3
   EXPECT_EQ(a.back().verb, ScriptVerb::Quit);
 }
 
@@ -70,6 +73,8 @@ TEST(PanelScript, ABadLineIsNamedWithWhatWasExpectedAndFound) {
             "s.txt:1: \"wait-for event\" takes a count (an integer >= 1), found \"0\"");
   EXPECT_EQ(parse_error("select node 2.5\n"),
             "s.txt:1: \"select node\" takes an index (an integer >= 0), found \"2.5\"");
+  EXPECT_EQ(parse_error("timeline -1\n"),
+            "s.txt:1: \"timeline\" takes a number >= 0, found \"-1\"");
   EXPECT_EQ(parse_error("orbit 10\n"),
             "s.txt:1: \"orbit\" takes two numbers of pixels, DX DY, found \"10\"");
   EXPECT_EQ(parse_error("screenshot shot.jpg\n"),
@@ -141,6 +146,28 @@ TEST(ScriptRunner, WaitingForAnEventCountsEventsAndFailsWhenTheSearchEndsShort) 
   EXPECT_NE(runner.finish(at(0.0, 10)), nullptr);
   runner.start(at(0.0, 10));
   EXPECT_THROW(runner.finish(at(0.0, 30, true, true)), ScriptFailure);
+}
+
+TEST(ScriptRunner, WaitingForTheMotionEndsWhenEveryStepWasTriedAndFailsWithoutOne) {
+  ScriptRunner runner(parse_panel_script("wait-for motion\nwait-for motion\n", "s.txt"));
+  runner.start(at(0.0, 0));
+  EXPECT_EQ(runner.finish(at(1.0, 40, true, true)), nullptr) << "plan found, motion running";
+  ScriptProgress moved = at(2.0, 40, true, true);
+  moved.motion_done = true;
+  EXPECT_NE(runner.finish(moved), nullptr);
+  runner.start(moved);
+  ScriptProgress off = at(3.0, 40, true, true);
+  off.motion_off = true;
+  try {
+    runner.finish(off);
+    FAIL() << "no failure";
+  } catch (const ScriptFailure& f) {
+    EXPECT_STREQ(f.what(),
+                 "line 2 \"wait-for motion\": the panel computes no motion (--no-motion)");
+  }
+  ScriptRunner failed(parse_panel_script("wait-for motion\n", "s.txt"));
+  failed.start(at(0.0, 0));
+  EXPECT_THROW(failed.finish(at(1.0, 9, true, false)), ScriptFailure);
 }
 
 TEST(ScriptRunner, MouseActionsAndScreenshotsWaitForTheirFrames) {

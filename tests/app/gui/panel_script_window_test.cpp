@@ -135,6 +135,33 @@ TEST_F(ScriptedPanel, ACancelledSearchRunsAgainToThePlan) {
   EXPECT_TRUE(fs::exists(dir_ / "out" / "plan.json"));
 }
 
+// Once the plan is found the panel computes the motion between its steps; the timeline then goes
+// through it: half-way from step 1 to step 2 is a sample of the motion, a posture of neither step,
+// and plan.json is saved again with the motion, certified (label slow: a whole motion).
+TEST_F(ScriptedPanel, TheTimelinePlaysTheMotionBetweenSteps) {
+  const test::XvfbRun r = run("motion",
+                              "wait-for plan\nwait-for motion\ntimeline 1\nscreenshot "
+                              "{dir}/step1.png\ntimeline 1.5\nprint\nscreenshot {dir}/half.png\n"
+                              "timeline 2\nscreenshot {dir}/step2.png\nquit\n",
+                              "");
+  ASSERT_EQ(r.code, 0) << r.log;
+  EXPECT_TRUE(std::regex_search(r.log, std::regex("panel: motion: ([0-9]+) of \\1 steps moved, "
+                                                  "certified, saved [^\n]*plan.json")))
+      << r.log;
+  EXPECT_TRUE(std::regex_search(
+      r.log, std::regex("panel: shown: motion into step 2, sample [0-9]+ of [0-9]+; event ")))
+      << r.log;
+  const std::vector<std::uint8_t> step1 = view_pixels(dir_ / "step1.png"),
+                                  half = view_pixels(dir_ / "half.png"),
+                                  step2 = view_pixels(dir_ / "step2.png");
+  EXPECT_NE(half, step1);
+  EXPECT_NE(half, step2);
+  std::ifstream plan(dir_ / "out" / "plan.json");
+  const std::string text((std::istreambuf_iterator<char>(plan)), {});
+  EXPECT_THAT(text, HasSubstr("\"stanceplan/plan@2\""));
+  EXPECT_THAT(text, HasSubstr("\"samples\""));
+}
+
 TEST_F(ScriptedPanel, ABadLineIsRefusedBeforeTheWindowOpens) {
   const test::XvfbRun r = run("bad", "run\n\nspeed fast\n", "");
   EXPECT_EQ(r.code, 1) << r.log;
