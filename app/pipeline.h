@@ -110,8 +110,9 @@ struct FigureFiles {
   std::string steps_dir;  // DIR/step_000.png, ...
   std::string strip;      // the figure strip (PNG)
   std::string gif;        // an animated GIF of the steps
+  std::string video;      // a video (MP4) of the steps, at full size (render/image/video_file.h)
   // A plan with motion plays it at a steady speed: this many frames a second, each step's motion
-  // (from the previous step) lasting step_seconds.
+  // (from the previous step) lasting step_seconds (the video holds steps without one as long).
   double fps = 10.0;
   double step_seconds = 1.0;
 };

@@ -13,6 +13,7 @@
 #include "render/figures/step_caption.h"
 #include "render/image/gif_writer.h"
 #include "render/image/png_io.h"
+#include "render/image/video_file.h"
 
 namespace stanceplan::app {
 namespace {
@@ -100,6 +101,35 @@ void write_gif(const render::PlanView& plan, render::SequenceOptions options,
   out << "render: animated GIF of " << frames.size() << " frames in " << path << "\n";
 }
 
+// The video plays the timeline at a steady fps: step_seconds per step, with or without motion (a
+// step without one is held), each distinct picture drawn once; the last step stays 2.5 s.
+void write_video(const render::PlanView& plan, const render::SequenceOptions& options,
+                 const FigureFiles& files, const std::shared_ptr<render::MeshLibrary>& meshes,
+                 std::ostream& out, std::ostream& err) {
+  render::SequenceRenderer sequence(plan, options, meshes);
+  render::VideoWriter video(files.video, options.width, options.height, {files.fps});
+  const int per_step = std::max(1, int(std::lround(files.fps * files.step_seconds)));
+  const int last = sequence.num_steps() - 1;
+  const int frames = last * per_step + 1 + int(std::lround(2.5 * files.fps));
+  TimelinePoint drawn{-1, -1};
+  render::Image picture;
+  for (int k = 0; k < frames; ++k) {
+    const TimelinePoint at =
+        timeline_point(plan.plan, std::min(double(k) / per_step, double(last)));
+    if (!(at == drawn)) {
+      picture = at.sample < 0 ? sequence.render_step(at.step)
+                              : sequence.render_motion_sample(at.step, at.sample,
+                                                              render::step_caption(plan, at.step));
+      drawn = at;
+    }
+    video.add(picture);
+  }
+  video.finish();
+  print_warnings(sequence.take_warnings(), err);
+  out << "render: video of " << video.frames() << " frames (" << video.encoder() << ", "
+      << files.fps << " fps) in " << files.video << "\n";
+}
+
 }  // namespace
 
 render::PlanView plan_view(const LoadedPlan& loaded) {
@@ -123,6 +153,7 @@ void render_figures(const render::PlanView& plan, const render::SequenceOptions&
   if (!files.steps_dir.empty()) write_steps(plan, options, files.steps_dir, meshes, out, err);
   if (!files.strip.empty()) write_strip(plan, options, files.strip, meshes, out, err);
   if (!files.gif.empty()) write_gif(plan, options, files, meshes, out, err);
+  if (!files.video.empty()) write_video(plan, options, files, meshes, out, err);
 }
 
 }  // namespace stanceplan::app

@@ -73,7 +73,7 @@ void render_final_sequence(const Scenario& scenario, const Plan& plan, const std
   const render::PlanView view = plan_view(scenario, plan);
   render_figures(view, figure_options(view),
                  {(std::filesystem::path(dir) / "steps").string(),
-                  (std::filesystem::path(dir) / "strip.png").string(), ""},
+                  (std::filesystem::path(dir) / "strip.png").string(), "", ""},
                  out, err);
 }
 

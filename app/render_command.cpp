@@ -11,6 +11,7 @@
 
 #include "app/pipeline.h"
 #include "planner/util/input_error.h"
+#include "render/image/video_file.h"
 
 namespace stanceplan::app {
 namespace {
@@ -79,10 +80,13 @@ void add_render_subcommand(CLI::App& cli, RenderOptions& options) {
   cmd->add_option("--strip", options.strip, "also write the figure strip of the sequence (PNG)");
   cmd->add_option("--gif", options.gif,
                   "also write an animated GIF of the steps (of the motion, when the plan has one)");
-  cmd->add_option("--fps", options.fps, "GIF of a motion: frames per second (default 10)")
+  cmd->add_option("--video", options.video,
+                  "also write a video (MP4, H.264) of the steps at full size, playing the motion "
+                  "at a steady speed (needs a build with FFmpeg's libraries)");
+  cmd->add_option("--fps", options.fps, "GIF of a motion, video: frames per second (default 10)")
       ->check(CLI::Range(1.0, 50.0));
   cmd->add_option("--step-seconds", options.step_seconds,
-                  "GIF of a motion: seconds each step's motion lasts (default 1)")
+                  "GIF of a motion, video: seconds each step lasts (default 1)")
       ->check(CLI::Range(0.1, 60.0));
   cmd->add_flag("--collision-geometry", options.collision_geometry,
                 "draw collision instead of visual geometry");
@@ -95,9 +99,15 @@ void add_render_subcommand(CLI::App& cli, RenderOptions& options) {
 }
 
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err) {
-  if (options.out_dir.empty() && options.strip.empty() && options.gif.empty())
+  if (options.out_dir.empty() && options.strip.empty() && options.gif.empty() &&
+      options.video.empty())
     throw InputError(
-        "render: nothing to write: give --out DIR, --strip FILE.png or --gif FILE.gif");
+        "render: nothing to write: give --out DIR, --strip FILE.png, --gif FILE.gif or --video "
+        "FILE.mp4");
+  if (!options.video.empty() && !render::video_support())
+    throw InputError(
+        "--video: this build has no FFmpeg (install libavcodec-dev libavformat-dev "
+        "libswscale-dev, configure and build again)");
   if (options.width < 16 || options.height < 16 || options.width > kMaxImageSide ||
       options.height > kMaxImageSide)
     throw InputError("--size: expected between 16 and 8192 pixels per side");
@@ -113,7 +123,8 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
     throw InputError(options.plan + ": steps: the plan has no step to render");
   const render::PlanView view = plan_view(plan);
   render_figures(view, sequence_options(options, view),
-                 {options.out_dir, options.strip, options.gif, options.fps, options.step_seconds},
+                 {options.out_dir, options.strip, options.gif, options.video, options.fps,
+                  options.step_seconds},
                  out, err);
   return 0;
 }

@@ -1,9 +1,10 @@
 #pragma once
 // `stanceplan render PLAN.json --out DIR [--size 1280x720] [--view three-quarter] [--strip
 // FILE.png]
-// [--gif FILE.gif] [--collision-geometry] [--friction-cones] [--eye X Y Z --target X Y Z]`:
-// renders every step of a plan (docs/PLAN_FORMAT.md) off-screen to DIR/step_000.png, ..., and
-// optionally the figure strip of the sequence and an animated GIF. Needs no display.
+// [--gif FILE.gif] [--video FILE.mp4] [--collision-geometry] [--friction-cones] [--eye X Y Z
+// --target X Y Z]`: renders every step of a plan (docs/PLAN_FORMAT.md) off-screen to
+// DIR/step_000.png, ..., and optionally the figure strip of the sequence, an animated GIF and a
+// video (where the build has FFmpeg). Needs no display.
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@ struct RenderOptions {
   std::string view = "three-quarter";  // front | side | top | three-quarter
   std::string strip;                   // figure strip PNG (empty: none)
   std::string gif;                     // animated GIF (empty: none)
+  std::string video;                   // video, MP4 (empty: none)
   double fps = 10.0;                   // GIF of a plan with motion: frames per second
   double step_seconds = 1.0;           // ... and seconds per step
   bool collision_geometry = false;

@@ -15,3 +15,6 @@ pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)        # stb_truetype for ca
 find_package(PNG REQUIRED)            # libpng at compression level 1 (stb_image_write is 3x slower)
 find_package(glfw3 3.3 REQUIRED)      # the panel's window (target `glfw`; it loads libGL itself with dlopen)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)    # Dear ImGui 1.86: static libimgui.a with the GLFW and OpenGL3 backends
+# Optional: `render --video` (MP4) through FFmpeg's libraries, confined to render/image/video_file.cpp;
+# without them the build works and --video says what to install.
+pkg_check_modules(FFMPEG IMPORTED_TARGET libavcodec libavformat libswscale libavutil)

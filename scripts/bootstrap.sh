@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev libstb-dev libpng-dev
   libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev
   libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev  # guide path
+  libavcodec-dev libavformat-dev libswscale-dev  # render --video (MP4; optional at build time)
   fonts-dejavu-core
   xvfb xauth libgl1-mesa-dri
   clang-14 libclang-rt-14-dev  # libFuzzer targets (fuzz/, scripts/run_fuzz.sh)

@@ -1,7 +1,8 @@
 #pragma once
 // A position on a plan's timeline, as the figures play it (the GIF, the panel's timeline): the
 // position p runs over [0, steps - 1]; step i sits at p = i and the motion into step i + 1 fills
-// (i, i + 1), its samples evenly spaced whatever their number (a steady speed of one step per unit).
+// (i, i + 1), its samples evenly spaced whatever their number (a steady speed of one step per
+// unit).
 #include "planner/plan/plan.h"
 
 namespace stanceplan {

@@ -12,6 +12,7 @@
 #include "app/render_command.h"
 #include "planner/util/input_error.h"
 #include "render/image/png_io.h"
+#include "render/image/video_file.h"
 #include "tests/render/render_fixtures.h"
 
 namespace stanceplan::app {
@@ -80,6 +81,35 @@ TEST(RenderCommand, WritesOneImagePerStepAStripAndAGif) {
   EXPECT_EQ(static_cast<unsigned char>(gif[8]) | static_cast<unsigned char>(gif[9]) << 8, 200);
   EXPECT_EQ(gif.back(), '\x3B');
   EXPECT_NE(out.str().find("3 images"), std::string::npos);
+}
+
+// Mean absolute difference of two frames' RGB (0-255).
+double mean_difference(const render::Image& a, const render::Image& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    if (i % 4 != 3) sum += std::abs(int(a.rgba[i]) - int(b.rgba[i]));
+  return sum / double(a.rgba.size() / 4 * 3);
+}
+
+// The video plays the steps at a steady speed: a step without motion is held for step_seconds
+// (fps frames), the last one 2.5 s more.
+TEST(RenderCommand, TheVideoHoldsEachStepForItsSeconds) {
+  if (!render::video_support()) GTEST_SKIP() << "this build has no FFmpeg";
+  const std::string dir = test::fresh_dir("command_video");
+  RenderOptions options;
+  options.plan = test::write_humanoid_plan(dir, 3);
+  options.width = 160;
+  options.height = 90;
+  options.video = dir + "/steps.mp4";
+  options.fps = 4.0;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_render(options, out, err), 0) << err.str();
+  EXPECT_NE(out.str().find("render: video of 19 frames ("), std::string::npos) << out.str();
+  const std::vector<render::Image> frames = render::read_video(options.video);
+  ASSERT_EQ(frames.size(), 19u);  // 2 steps x 4 frames + step 0 + 10 frames of hold
+  EXPECT_LT(mean_difference(frames[0], frames[3]), 1.0) << "step 0 held";
+  EXPECT_GT(mean_difference(frames[0], frames[4]), 2.0 * mean_difference(frames[0], frames[3]))
+      << "then step 1";
 }
 
 TEST(RenderCommand, MissingUrdfIsAnErrorNamingTheFile) {
