@@ -5,7 +5,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/bootstrap.sh"
 "$root/scripts/build.sh"
 ctest --test-dir "${BUILD_DIR:-$root/build}" --output-on-failure -j "${JOBS:-$(nproc)}" --timeout 900
-# ThreadSanitizer on the hand-off between the search thread and the snapshot thread (tests/app/live):
+# ThreadSanitizer on the hand-offs between the search thread and the snapshot thread, and between
+# the motion thread and its reader (tests/app/live):
 # a separate tree with -DSTANCEPLAN_SANITIZER=thread (-O1, as the ASan tree), building only that test
 # executable.
 if [[ "${STANCEPLAN_TSAN:-1}" != 0 ]]; then
@@ -14,7 +15,7 @@ if [[ "${STANCEPLAN_TSAN:-1}" != 0 ]]; then
     -DSTANCEPLAN_BUILD_BENCHMARKS=OFF "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" >/dev/null
   cmake --build "$tsan_dir" -j "${JOBS:-$(nproc)}" --target app_live_test
   TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$root/tests/app/live/tsan.supp ${TSAN_OPTIONS:-}" \
-    "$tsan_dir/tests/app_live_test" --gtest_filter='PlanSession.*:Snapshots.*'
+    "$tsan_dir/tests/app_live_test" --gtest_filter='PlanSession.*:Snapshots.*:MotionSession.*'
 fi
 # AddressSanitizer + UndefinedBehaviorSanitizer over the suite, in its own tree (-O1, as sanitizer
 # builds usually are: quicker to compile than -O3), except the whole plans of the paper's scenarios
