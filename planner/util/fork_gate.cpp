@@ -1,5 +1,7 @@
 #include "planner/util/fork_gate.h"
 
+#include <unistd.h>
+
 #include <condition_variable>
 #include <mutex>
 
@@ -36,7 +38,7 @@ ForkGate::Pass::~Pass() {
   g.changed.notify_all();
 }
 
-ForkGate::Closed::Closed() {
+ForkGate::Closed::Closed() : owner_(getpid()) {
   GateState& g = state();
   std::unique_lock<std::mutex> lock(g.mutex);
   // Readers first: a pending fork does not stop new passes (see the header), so wait for a gap.
@@ -45,6 +47,7 @@ ForkGate::Closed::Closed() {
 }
 
 ForkGate::Closed::~Closed() {
+  if (getpid() != owner_) return;  // in a child forked under the gate (see the header)
   GateState& g = state();
   {
     std::lock_guard<std::mutex> lock(g.mutex);

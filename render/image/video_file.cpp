@@ -164,9 +164,9 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height,
     v.frame->width = v.codec->width;
     v.frame->height = v.codec->height;
     if (const int code = av_frame_get_buffer(v.frame, 0); code < 0) v.fail("no frame buffer", code);
-    v.scale = sws_getContext(v.codec->width, v.codec->height, AV_PIX_FMT_RGBA, v.codec->width,
-                             v.codec->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr,
-                             nullptr);
+    v.scale =
+        sws_getContext(v.codec->width, v.codec->height, AV_PIX_FMT_RGBA, v.codec->width,
+                       v.codec->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr);
     if (v.scale == nullptr) v.fail("no RGBA to YUV conversion", 0);
   } catch (...) {
     v.release();
@@ -199,7 +199,8 @@ void VideoWriter::finish() {
   Impl& v = *impl_;
   if (v.finished) return;
   v.encode(nullptr);
-  if (const int code = av_write_trailer(v.format); code < 0) v.fail("cannot write the trailer", code);
+  if (const int code = av_write_trailer(v.format); code < 0)
+    v.fail("cannot write the trailer", code);
   avio_closep(&v.format->pb);
   std::error_code error;
   std::filesystem::rename(v.part, v.path, error);
@@ -234,10 +235,9 @@ struct Decoder {
   // Every frame the decoder has ready, converted to RGBA.
   void drain(std::vector<Image>& frames) {
     while (avcodec_receive_frame(codec, frame) >= 0) {
-      scale = sws_getCachedContext(scale, frame->width, frame->height,
-                                   static_cast<AVPixelFormat>(frame->format), frame->width,
-                                   frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC, nullptr, nullptr,
-                                   nullptr);
+      scale = sws_getCachedContext(
+          scale, frame->width, frame->height, static_cast<AVPixelFormat>(frame->format),
+          frame->width, frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC, nullptr, nullptr, nullptr);
       Image image(frame->width, frame->height);
       std::uint8_t* target[1] = {image.rgba.data()};
       const int stride[1] = {4 * frame->width};

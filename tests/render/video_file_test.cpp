@@ -25,7 +25,8 @@ TEST(VideoFile, FramesDecodeBackInOrderWithTheirColours) {
   {
     VideoWriter video(path, 64, 48, {10.0});
     for (int k = 0; k < 20; ++k)  // ten red frames, then ten blue ones
-      video.add(Image(64, 48, k < 10 ? Color{0.9f, 0.1f, 0.1f, 1.0f} : Color{0.1f, 0.2f, 0.9f, 1.0f}));
+      video.add(
+          Image(64, 48, k < 10 ? Color{0.9f, 0.1f, 0.1f, 1.0f} : Color{0.1f, 0.2f, 0.9f, 1.0f}));
     EXPECT_FALSE(fs::exists(path)) << "written beside the target until finish()";
     video.finish();
     EXPECT_EQ(video.frames(), 20);

@@ -44,7 +44,11 @@ inline XvfbRun run_command_in_xvfb(const std::string& command_line,
   // objects, libOSMesa and unknown modules). Every other ASan check stays on, and the panel's
   // classes are leak-checked in-process by the other tests of this folder.
   const std::string asan = "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" ";
-  const std::string command = asan + xvfb + " -a -n " + first_display +
+  // The X authority file in the test's own folder (-f): left to itself xvfb-run makes a temporary
+  // folder for it and, when removing that folder fails at exit (seen once in CI), exits 5 whatever
+  // the command returned.
+  const std::string auth = (dir / "Xauthority").string();
+  const std::string command = asan + xvfb + " -a -n " + first_display + " -f " + auth +
                               " -s \"-screen 0 1280x720x24\" " + command_line + " > " +
                               log.string() + " 2>&1";
   const int status = std::system(command.c_str());
