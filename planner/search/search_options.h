@@ -50,6 +50,11 @@ struct SearchOptions {
   // the guide's posture is to realising them (support_share.h; a heuristic); false: the
   // enumeration's order.
   bool order_candidates = true;
+  // Candidate solves that make no progress stop early: each gets this many Ipopt iterations, and
+  // more only while its constraint violation keeps falling (StallRule::budget,
+  // planner/solver/stall_monitor.h; a heuristic: a stopped solve is a rejection, never lets
+  // anything through). 0: every candidate runs to the solver's iteration limit.
+  int progress_budget = 0;
 };
 
 }  // namespace stanceplan
