@@ -9,7 +9,10 @@
 // a plan that aborts the process is reported as a crash. Run (about 8 min today, 4 of them the
 // desk running into its 120 s budget twice):
 //   nice -n 10 build/bench/untuned_bench
-// and pick scenarios with --benchmark_filter=stairs (names: scenario/threads:N).
+// and pick scenarios with --benchmark_filter=stairs (names: scenario/threads:N). With
+// STANCEPLAN_BENCH_SET=paper it measures the paper's scenario files (bench/scenario_list.h, as
+// written) the same way, so that a change to the search is judged on both sets with one tool;
+// bench/solver_switches.h and bench/search_switches.h list the switches for experiments.
 #include <benchmark/benchmark.h>
 
 #include <sys/wait.h>
@@ -28,6 +31,8 @@
 #include <vector>
 
 #include "bench/plan_figures.h"
+#include "bench/scenario_list.h"
+#include "bench/search_switches.h"
 #include "bench/solver_switches.h"
 #include "planner/io/scenario.h"
 #include "planner/search/stance_search.h"
@@ -44,10 +49,24 @@ std::string untuned_dir() {
   return std::string(STANCEPLAN_SOURCE_DIR) + "/scenarios/untuned";
 }
 
+bool paper_set() {
+  const char* set = std::getenv("STANCEPLAN_BENCH_SET");
+  return set && std::string(set) == "paper";
+}
+
+std::string scenario_file(const std::string& name) {
+  return paper_set() ? bench::scenario_path(name) : untuned_dir() + "/" + name + ".yaml";
+}
+
 // Every scenario file of the folder, by name, so that a new file is benchmarked without a change
-// here and the order (and so the output) is stable.
+// here and the order (and so the output) is stable; the paper's list with STANCEPLAN_BENCH_SET.
 std::vector<std::string> untuned_names() {
   std::vector<std::string> names;
+  if (paper_set()) {
+    for (const std::string& name : bench::kScenarios)
+      if (std::filesystem::exists(bench::scenario_path(name))) names.push_back(name);
+    return names;
+  }
   for (const auto& entry : std::filesystem::directory_iterator(untuned_dir()))
     if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
@@ -164,8 +183,9 @@ Run plan_isolated(const Scenario& scenario, const SearchOptions& options) {
 }
 
 void plan_untuned(benchmark::State& state, const std::string& name) {
-  Scenario scenario = load_scenario(untuned_dir() + "/" + name + ".yaml");
+  Scenario scenario = load_scenario(scenario_file(name));
   bench::apply_solver_switches(scenario.solver);
+  bench::apply_search_switches(scenario.search);
   SearchOptions options = scenario.search;
   options.threads = static_cast<int>(state.range(0));
   Run run;
@@ -258,7 +278,11 @@ void print_calls(const std::string& key, const std::vector<SolverCall>& calls) {
   std::vector<std::pair<std::string, ChangeTally>> top(by_change.begin(), by_change.end());
   std::stable_sort(top.begin(), top.end(),
                    [](const auto& a, const auto& b) { return a.second.calls > b.second.calls; });
-  std::printf("\n%s: %zu calls;", key.c_str(), calls.size());
+  long iterations = 0;
+  double solver_s = 0.0;
+  for (const SolverCall& c : calls) iterations += c.iterations, solver_s += c.time_ms / 1000.0;
+  std::printf("\n%s: %zu calls, %ld Ipopt iterations, %.2f s in the solver;", key.c_str(),
+              calls.size(), iterations, solver_s);
   for (const auto& [status, n] : by_status) std::printf(" %s %d", status.c_str(), n);
   std::printf("; %zu distinct changes, the most tried:\n", by_change.size());
   for (size_t i = 0; i < std::min<size_t>(top.size(), 8); ++i)

@@ -597,12 +597,16 @@ class ScenarioReader {
 
   void read_search(const YAML::Node& node, Scenario& s) const {
     if (!node) return;
-    expect_keys(
-        node, "search",
-        {"max_nodes", "time_limit", "milestone_tolerance", "threads", "contact_reach",
-         "self_contacts", "placement_tolerance", "orientation_tolerance", "stance_weight",
-         "max_retries", "contact_pairs", "last_contacts", "min_contacts", "defer_repeated_failures",
-         "expansion_batch", "order_candidates", "guide_seed", "guide_spacing", "guide_time_limit"});
+    expect_keys(node, "search", {"max_nodes",           "time_limit",
+                                 "milestone_tolerance", "threads",
+                                 "contact_reach",       "self_contacts",
+                                 "placement_tolerance", "orientation_tolerance",
+                                 "stance_weight",       "max_retries",
+                                 "contact_pairs",       "last_contacts",
+                                 "min_contacts",        "defer_repeated_failures",
+                                 "expansion_batch",     "order_candidates",
+                                 "progress_budget",     "guide_seed",
+                                 "guide_spacing",       "guide_time_limit"});
     if (node["contact_pairs"])
       read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"])
@@ -630,6 +634,8 @@ class ScenarioReader {
       s.search.expansion_batch = integer(node["expansion_batch"], "search.expansion_batch", 0);
     if (node["order_candidates"])
       s.search.order_candidates = boolean(node["order_candidates"], "search.order_candidates");
+    if (node["progress_budget"])
+      s.search.progress_budget = integer(node["progress_budget"], "search.progress_budget", 0);
     if (node["max_nodes"]) s.search.max_nodes = integer(node["max_nodes"], "search.max_nodes", 1);
     if (node["time_limit"])
       s.search.time_limit_s = positive(node["time_limit"], "search.time_limit");

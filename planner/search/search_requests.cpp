@@ -67,8 +67,9 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   if (options_.order_candidates && options_.expansion_batch > 0) {
     const Eigen::VectorXd q_guide =
         guide_.size() > 0 ? guide_.posture_near(node.q(), t_) : node.q();
-    shares = order_by_support_share(problem_.scene,
-                                    system_kinematics(problem_.scene.system, q_guide), candidates);
+    shares =
+        order_by_support_share(problem_.scene, system_kinematics(problem_.scene.system, q_guide),
+                               candidates, options_.placement_tolerance);
   }
   pending_.resize(tree_.size());
   pending_[size_t(n)].clear();
@@ -131,6 +132,7 @@ PostureRequest StanceSearch::Run::request_for(const Attempt& a, size_t index) co
              : a.attempt == 1 ? q_ref
                               : perturbed(scene.system, node.q(), a.node, a.attempt, index);
   r.q_ref = q_ref;
+  r.progress_budget = options_.progress_budget;
   return r;
 }
 

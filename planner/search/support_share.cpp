@@ -19,14 +19,17 @@ double support_share_score(const Scene& scene, const std::vector<ModelData>& gui
 }
 
 std::vector<double> order_by_support_share(const Scene& scene, const std::vector<ModelData>& guide,
-                                           std::vector<Candidate>& candidates) {
+                                           std::vector<Candidate>& candidates, double realised) {
   std::vector<std::pair<double, Candidate>> keyed;
   keyed.reserve(candidates.size());
   for (Candidate& c : candidates)
     keyed.emplace_back(c.add ? support_share_score(scene, guide, c.contact) : 0.0, std::move(c));
-  // Removals before additions, whatever the additions' scores.
-  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
-    return std::make_pair(a.second.add, a.first) < std::make_pair(b.second.add, b.first);
+  // Realised additions, then removals, then the other additions, whatever their scores.
+  const auto group = [realised](const std::pair<double, Candidate>& k) {
+    return !k.second.add ? 1 : k.first <= realised ? 0 : 2;
+  };
+  std::stable_sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+    return std::make_pair(group(a), a.first) < std::make_pair(group(b), b.first);
   });
   std::vector<double> scores(keyed.size());
   for (size_t i = 0; i < keyed.size(); ++i) {

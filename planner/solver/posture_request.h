@@ -35,6 +35,10 @@ struct PostureRequest {
   std::vector<ContactTask> contacts;
   Eigen::VectorXd q_init;  // initial guess (warm start), System::nq()
   Eigen::VectorXd q_ref;   // milestone configuration of the objective (E21); empty: q_init
+  // A candidate's solve may be stopped when it makes no progress (StallRule::budget, iterations;
+  // 0: the solver's options decide): set by the search for its candidates, never by the motion
+  // planner or a single posture, which need every solve to run its course.
+  int progress_budget = 0;
 };
 
 // How Ipopt gets second derivatives: its limited-memory (L-BFGS) approximation; the Hessian of the

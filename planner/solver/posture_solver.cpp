@@ -459,8 +459,10 @@ PostureResult PostureSolver::solve(const PostureRequest& request,
 }
 
 PostureResult PostureSolver::solve_with(const PostureRequest& request,
-                                        const SolverOptions& options) const {
+                                        const SolverOptions& given) const {
   validate(request);
+  SolverOptions options = given;
+  if (request.progress_budget > 0) options.stall.budget = request.progress_budget;
   // An unusable guess (e.g. a NaN from a degenerate configuration upstream) is a failed candidate
   // with its reason, not a malformed request; Ipopt never sees it.
   if (std::string reason = unusable_guess(scene_.system, request); !reason.empty()) {

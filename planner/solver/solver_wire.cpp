@@ -98,6 +98,7 @@ std::string serialize(const PostureRequest& request) {
   }
   w.vector(request.q_init);
   w.vector(request.q_ref);
+  w.pod<int32_t>(request.progress_budget);
   return w.bytes;
 }
 
@@ -123,6 +124,7 @@ PostureRequest deserialize_request(const std::string& bytes) {
   }
   request.q_init = r.vector();
   request.q_ref = r.vector();
+  request.progress_budget = r.pod<int32_t>();
   return request;
 }
 

@@ -6,13 +6,15 @@
 
 namespace stanceplan {
 
-StallMonitor::StallMonitor(const StallRule& rule, int max_iterations) : rule_(rule) {
+StallMonitor::StallMonitor(const StallRule& rule, int max_iterations)
+    : rule_(rule), allowed_(rule.budget) {
   if (rule_.after <= 0) return;  // off: no history, nothing allocated
   prefix_best_.reserve(size_t(std::max(0, max_iterations)) + 16);
   history_.reserve(prefix_best_.capacity());
 }
 
 bool StallMonitor::stalled(int iteration, double violation) {
+  if (rule_.budget > 0 && iteration >= 0 && out_of_budget(iteration, violation)) return true;
   if (rule_.after <= 0 || iteration < 0) return false;
   // Ipopt counts from 0 without gaps; fill a gap (never expected) with the value itself.
   while (int(history_.size()) <= iteration) {
@@ -33,6 +35,28 @@ bool StallMonitor::stalled(int iteration, double violation) {
                 "constraint violation %.3g at iteration %d, best %.3g over the last %d iterations, "
                 "not %gx below %.3g (best up to iteration %d)",
                 violation, iteration, recent, rule_.window, rule_.factor, before, split);
+  reason_ = text;
+  return true;
+}
+
+// A new decade of the violation (or near feasibility) buys `extension` iterations from here; a
+// solve past its allowance stops. The first iterate sets the first mark.
+bool StallMonitor::out_of_budget(int iteration, double violation) {
+  if (!std::isfinite(progress_mark_)) {
+    progress_mark_ = violation;
+    mark_iteration_ = iteration;
+  } else if (violation * rule_.progress_factor < progress_mark_) {
+    progress_mark_ = violation;
+    mark_iteration_ = iteration;
+    allowed_ = std::max(allowed_, iteration + rule_.extension);
+  }
+  if (violation < rule_.near_feasible) allowed_ = std::max(allowed_, iteration + rule_.extension);
+  if (iteration <= allowed_) return false;
+  char text[200];
+  std::snprintf(text, sizeof(text),
+                "no progress within its iteration budget: constraint violation %.3g at iteration "
+                "%d, not %gx below %.3g since iteration %d",
+                violation, iteration, rule_.progress_factor, progress_mark_, mark_iteration_);
   reason_ = text;
   return true;
 }

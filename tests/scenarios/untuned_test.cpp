@@ -70,6 +70,58 @@ TEST(Untuned, TheStairsPlanWithTwoCallsPerStepWhenExpandedLazily) {
     EXPECT_LT((parallel.plan.steps[i].q - result.plan.steps[i].q).norm(), 1e-9) << "step " << i;
 }
 
+// Lazy expansion three at a time with the progress budget (search.expansion_batch: 3,
+// search.progress_budget: 30; both opt-in, the measured setting): the side-step plans with at most
+// 2 calls per step (18 calls for 9 steps measured; 20 with the defaults).
+TEST(Untuned, TheSideStepPlansWithTwoCallsPerStepWhenExpandedLazilyWithAProgressBudget) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/untuned/side_step.yaml"));
+  scenario.search.expansion_batch = 3;
+  scenario.search.progress_budget = 30;
+  const SearchResult result = plan_with_one_process(scenario);
+  test::expect_certified(scenario, result, "untuned_side_step_lazy");
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  EXPECT_LE(result.solver_calls, 2 * static_cast<int>(result.plan.steps.size()));
+}
+
+// The progress budget (search.progress_budget, planner/solver/stall_monitor.h) on the walk with a
+// turn, expanded lazily: solves that stop progressing are stopped and say so, none that would
+// have succeeded is, so the plan and the calls are those without the budget, for fewer Ipopt
+// iterations (487 instead of 766 measured).
+TEST(Untuned, TheProgressBudgetKeepsTheWalkWithATurnsPlanForFewerIterations) {
+  Scenario lazy = load_scenario(test::source_path("scenarios/untuned/walk_turn.yaml"));
+  lazy.search.expansion_batch = 3;
+  lazy.search.threads = 1;
+  struct Run {
+    SearchResult result;
+    int iterations = 0;
+    int stopped = 0;  // candidate events that say the budget stopped them
+  };
+  auto plan = [&](int budget) {
+    SearchOptions options = lazy.search;
+    options.progress_budget = budget;
+    StanceSearch search(lazy, options);
+    Run run;
+    search.set_observer([&](const SearchEvent& e) {
+      if (e.kind != SearchEventKind::Candidate) return;
+      run.iterations += e.iterations;
+      run.stopped += e.message.find("no progress within its iteration budget") != std::string::npos;
+    });
+    run.result = search.run();
+    return run;
+  };
+  const Run with_budget = plan(30), without = plan(0);
+  test::expect_certified(lazy, with_budget.result, "untuned_walk_turn_budget");
+  ASSERT_EQ(without.result.status, PlanStatus::Found) << without.result.message;
+  EXPECT_GT(with_budget.stopped, 0);
+  EXPECT_EQ(without.stopped, 0);
+  EXPECT_LT(with_budget.iterations, without.iterations);
+  EXPECT_EQ(with_budget.result.solver_calls, without.result.solver_calls);
+  const auto& steps = with_budget.result.plan.steps;
+  ASSERT_EQ(steps.size(), without.result.plan.steps.size());
+  for (size_t i = 0; i < steps.size(); ++i)
+    EXPECT_LT((steps[i].q - without.result.plan.steps[i].q).norm(), 1e-9) << "step " << i;
+}
+
 // The stall rule (solver.stall_after, off by default; planner/solver/stall_monitor.h) on the
 // side-step: stalled solves are stopped (their events say so), and the plan is the one found
 // without the rule, step for step, with the same number of solver calls.

@@ -49,7 +49,7 @@ TEST(SupportShare, OrdersTheSoleAboveTheGuidedTreadFirst) {
                                  {false, test::task(scene, "robot/l_sole", "env/tread_5").contact},
                                  add(scene, "robot/r_sole", "env/tread_5"),
                                  add(scene, "robot/r_sole", "env/tread_4")};
-  const std::vector<double> scores = order_by_support_share(scene, guide, list);
+  const std::vector<double> scores = order_by_support_share(scene, guide, list, -1.0);
   ASSERT_EQ(list.size(), 6u);
   EXPECT_EQ(name(scene, list[0]), "-robot/l_sole@env/tread_5");  // removals first
   EXPECT_EQ(scores[0], 0.0);
@@ -62,8 +62,29 @@ TEST(SupportShare, OrdersTheSoleAboveTheGuidedTreadFirst) {
   std::vector<Candidate> removals = {
       {false, test::task(scene, "robot/r_sole", "env/floor").contact},
       {false, test::task(scene, "robot/l_sole", "env/floor").contact}};
-  order_by_support_share(scene, guide, removals);
+  order_by_support_share(scene, guide, removals, -1.0);
   EXPECT_EQ(name(scene, removals[0]), "-robot/r_sole@env/floor");
+}
+
+// An addition the guide's posture already realises (within `realised`) comes before the removals:
+// the sole standing on the guided tread is placed before any contact is lifted, the tread 10 cm
+// below it still after them.
+TEST(SupportShare, PutsAdditionsTheGuideRealisesBeforeRemovals) {
+  const Scene scene = test::humanoid_scene("stairs");
+  Eigen::VectorXd q = test::standing_configuration(scene);
+  q[0] = 1.7;
+  q[2] = 0.93 + 0.5;
+  const auto guide = system_kinematics(scene.system, q);
+  std::vector<Candidate> list = {add(scene, "robot/r_sole", "env/tread_4"),
+                                 {false, test::task(scene, "robot/l_sole", "env/floor").contact},
+                                 add(scene, "robot/r_sole", "env/tread_5")};
+  const std::vector<double> scores = order_by_support_share(scene, guide, list, 0.03);
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(name(scene, list[0]), "+robot/r_sole@env/tread_5");
+  EXPECT_LE(scores[0], 0.03);
+  EXPECT_EQ(name(scene, list[1]), "-robot/l_sole@env/floor");
+  EXPECT_EQ(name(scene, list[2]), "+robot/r_sole@env/tread_4");
+  EXPECT_GT(scores[2], 0.03);
 }
 
 }  // namespace

@@ -35,6 +35,7 @@ class Pool : public ::testing::Test {
       if (i == 3)  // warm-started forces at the four vertices of either sole
         for (ContactTask& t : r.contacts)
           t.force_guess_W.assign(4, Eigen::Vector3d(0.5, -0.2, 40.0));
+      if (i == 2) r.progress_budget = 30;  // a candidate's solve: stopped when it stalls
       r.q_init = test::standing_configuration(*scene_);
       r.q_init[0] = 0.01 * i;
       out.push_back(r);
@@ -69,6 +70,7 @@ TEST_F(Pool, TheWireFormatRoundTrips) {
       EXPECT_EQ(back.contacts[i].force_guess_W, r.contacts[i].force_guess_W);
     }
     EXPECT_EQ(back.q_init, r.q_init);
+    EXPECT_EQ(back.progress_budget, r.progress_budget);
     const PostureResult result = solver.solve(r);
     const PostureResult again = deserialize_result(serialize(result));
     expect_identical(result, again);

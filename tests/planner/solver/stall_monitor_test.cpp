@@ -59,5 +59,41 @@ TEST(StallMonitor, ADropInsideTheWindowKeepsTheSolveGoing) {
   EXPECT_EQ(first_stop(monitor, [](int k) { return k == 40 ? 0.2 : 0.3; }), 70);
 }
 
+// The progress budget (StallRule::budget; 30 / 20 / 10 as the search uses it): a flat violation
+// stops once its 30 iterations are spent; every new decade buys 20 more from where it was reached;
+// a violation near feasibility is never stopped.
+StallRule budget_rule() {
+  StallRule rule;
+  rule.budget = 30;
+  rule.extension = 20;
+  rule.progress_factor = 10.0;
+  return rule;
+}
+
+TEST(ProgressBudget, AFlatViolationStopsWhenItsBudgetIsSpent) {
+  StallMonitor monitor(budget_rule(), 100);
+  EXPECT_EQ(first_stop(monitor, [](int) { return 0.315; }), 31);
+  EXPECT_EQ(monitor.reason(),
+            "no progress within its iteration budget: constraint violation 0.315 at iteration 31, "
+            "not 10x below 0.315 since iteration 0");
+}
+
+TEST(ProgressBudget, EachNewDecadeBuysMoreIterations) {
+  StallMonitor monitor(budget_rule(), 100);
+  // 0.9 up to iteration 24, then 0.05 (a decade below 0.9) from 25 on: 25 + 20 = 45 allowed.
+  EXPECT_EQ(first_stop(monitor, [](int k) { return k < 25 ? 0.9 : 0.05; }), 46);
+  // A fall of a decade every 15 iterations, down to feasibility: never stopped.
+  StallMonitor falling(budget_rule(), 100);
+  EXPECT_EQ(first_stop(falling, [](int k) { return std::pow(10.0, -k / 15.0); }), -1);
+}
+
+TEST(ProgressBudget, ASolveNearFeasibilityIsNeverStopped) {
+  StallMonitor monitor(budget_rule(), 100);
+  EXPECT_EQ(first_stop(monitor, [](int) { return 9e-3; }), -1);
+  // Off by default: no budget.
+  StallMonitor by_default(StallRule{}, 100);
+  EXPECT_EQ(first_stop(by_default, [](int) { return 0.9; }), -1);
+}
+
 }  // namespace
 }  // namespace stanceplan
