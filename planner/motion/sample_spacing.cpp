@@ -18,6 +18,7 @@ SampleSpacing::SampleSpacing(const Scene& scene, const std::vector<SurfaceRef>& 
     const Surface& s = scene.surfaces.get(ref);
     surfaces_.push_back({ref, s.link, s.vertices_L()});
     num_vertices_ += int(surfaces_.back().vertices_L.size());
+    vertex_surfaces_.insert(vertex_surfaces_.end(), surfaces_.back().vertices_L.size(), ref);
   }
   for (int e = 0; e < system.num_entities(); ++e) {
     data_a_.emplace_back(system.entity(e));

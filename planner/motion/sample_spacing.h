@@ -37,6 +37,7 @@ class SampleSpacing {
   // the measured vertices at q, stored once per configuration (resized to num_vertices()), and
   // the measure between two configurations from them (no kinematics, no allocation).
   int num_vertices() const { return num_vertices_; }
+  SurfaceRef vertex_surface(int i) const { return vertex_surfaces_[size_t(i)]; }
   void vertices(const Eigen::VectorXd& q, std::vector<Eigen::Vector3d>* p_W);
   SpacingMeasure measure(const Eigen::VectorXd& q_a, const std::vector<Eigen::Vector3d>& p_a_W,
                          const Eigen::VectorXd& q_b,
@@ -58,6 +59,7 @@ class SampleSpacing {
   const Scene& scene_;
   std::vector<MeasuredSurface> surfaces_;
   int num_vertices_ = 0;
+  std::vector<SurfaceRef> vertex_surfaces_;  // per vertex of vertices()
   std::vector<ModelData> data_a_, data_b_;
 };
 

@@ -1,41 +1,72 @@
 #include "planner/motion/stance_rrt.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "planner/motion/configuration_path.h"
 
 namespace stanceplan {
 namespace {
-// An extension must bring its node this much nearer its target (in units of the spacing), else
-// the tree is stuck there (against an obstacle, at a limit).
-constexpr double kMinProgress = 0.1;
+// An extension must bring its node nearer its target by this fraction of what its reference
+// gained, else the tree is stuck there (against an obstacle, at a limit).
+constexpr double kMinProgress = 0.25;
 }  // namespace
 
-StanceRrt::StanceRrt(const Scene& scene, SampleSpacing& spacing, double joint_spacing,
-                     double point_spacing, StanceRrtOptions options)
+StanceRrt::StanceRrt(const Scene& scene, SampleSpacing& spacing, const std::vector<Contact>& held,
+                     double joint_spacing, double point_spacing, StanceRrtOptions options)
     : scene_(scene),
       spacing_(spacing),
+      free_vertex_(size_t(spacing.num_vertices()), 1),
       joint_spacing_(joint_spacing),
       point_spacing_(point_spacing),
       options_(options) {
   q_ref_.resize(scene.system.nq());
   target_.sample.q.resize(scene.system.nq());
+  for (int i = 0; i < spacing.num_vertices(); ++i)
+    for (const Contact& c : held)
+      if (spacing.vertex_surface(i) == c.s1 || spacing.vertex_surface(i) == c.s2)
+        free_vertex_[size_t(i)] = 0;
 }
 
-double StanceRrt::uniform() { return double(rng_() >> 11) * 0x1.0p-53; }
+double StanceRrt::uniform() {
+  return double(rng_() >> 11) * 0x1.0p-53;
+}
 
 double StanceRrt::ratio(const Node& a, const Node& b) const {
   return spacing_.measure(a.sample.q, a.p_W, b.sample.q, b.p_W)
       .ratio(joint_spacing_, point_spacing_);
 }
 
+double StanceRrt::distance(const Node& na, const Node& nb, double* largest) const {
+  const System& system = scene_.system;
+  const Eigen::VectorXd &a = na.sample.q, &b = nb.sample.q;
+  double sum = 0.0, most = 0.0;
+  const auto add = [&](double d) {
+    sum += d * d;
+    most = std::max(most, std::abs(d));
+  };
+  for (int e = 0; e < system.num_entities(); ++e) {
+    const Entity& entity = system.entity(e);
+    if (entity.kind == EntityKind::Environment) continue;
+    const int o = system.offset(e);
+    if (entity.floating())
+      for (int k = 0; k < 3; ++k) add((b[o + k] - a[o + k]) / point_spacing_);
+    for (int k = entity.first_dof(); k < entity.nq(); ++k)
+      add((b[o + k] - a[o + k]) / joint_spacing_);
+  }
+  for (size_t i = 0; i < free_vertex_.size(); ++i)
+    if (free_vertex_[i]) add((nb.p_W[i] - na.p_W[i]).norm() / point_spacing_);
+  if (largest) *largest = most;
+  return std::sqrt(sum);
+}
+
 int StanceRrt::nearest(const Tree& tree, const Node& target) const {
   int best = 0;
-  double best_ratio = ratio(tree[0], target);
+  double best_distance = distance(tree[0], target, nullptr);
   for (int i = 1; i < int(tree.size()); ++i) {
-    const double r = ratio(tree[size_t(i)], target);
-    if (r < best_ratio) best = i, best_ratio = r;
+    const double d = distance(tree[size_t(i)], target, nullptr);
+    if (d < best_distance) best = i, best_distance = d;
   }
   return best;
 }
@@ -53,24 +84,26 @@ int StanceRrt::connect(Tree* tree, int from, const Node& target, int max_steps, 
   Node next;
   for (int k = 0; k < max_steps && !*reached && projections_ < options_.max_projections; ++k) {
     const Node& here = (*tree)[size_t(at)];
-    const double r = ratio(here, target);
-    double alpha = std::min(1.0, options_.step / r);
+    // The reference moves each coordinate at most `step` spacings (a landing too far, the
+    // spacing being non-linear in the step, is tried closer, twice).
+    double largest = 0.0;
+    const double d = distance(here, target, &largest);
+    double alpha = std::min(1.0, options_.step / std::max(largest, 1e-12));
     bool moved = false;
-    // The spacing is not linear in the reference step: a landing too far is tried once closer.
-    for (int attempt = 0; attempt < 2 && !moved; ++attempt, alpha *= 0.5) {
+    for (int attempt = 0; attempt < 3 && !moved; ++attempt, alpha *= 0.5) {
       interpolate_configuration(scene_.system, here.sample.q, target.sample.q, alpha, q_ref_);
       ++projections_;
       if (!(*project_)(here.sample, q_ref_, &next.sample)) break;
       spacing_.vertices(next.sample.q, &next.p_W);
       if (ratio(here, next) > 1.0) continue;
-      const double left = ratio(next, target);
-      if (left > r - kMinProgress) break;
+      // Progress: at least kMinProgress of what the reference gained.
+      if (distance(next, target, nullptr) > d - kMinProgress * alpha * d) break;
       next.parent = at;
       tree->push_back(std::move(next));
       next = Node{};
       at = int(tree->size()) - 1;
       moved = true;
-      *reached = left <= 1.0;
+      *reached = ratio(tree->back(), target) <= 1.0;
     }
     if (!moved) break;
   }

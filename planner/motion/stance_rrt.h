@@ -8,7 +8,8 @@
 // grows from the start (seeded with the straight samples already found), one from the goal; an
 // extension moves its reference at most one spacing from its node and keeps the projection only
 // when it lands within the spacing (so every edge is a valid pair of consecutive samples) and
-// nearer its target. Random targets are the straight path perturbed joint by joint (roots are
+// nearer its target (distances in units of the spacing over roots, joints and the points of the
+// surfaces not held). Random targets are the straight path perturbed joint by joint (roots are
 // left to the projection, which the held contacts fix). The path found is shortened by
 // shortcuts (the same greedy extension between two of its nodes). Deterministic: our own
 // generator, seeded for every plan() (std:: distributions differ between libraries).
@@ -39,8 +40,10 @@ struct StanceRrtResult {
 
 class StanceRrt {
  public:
-  StanceRrt(const Scene& scene, SampleSpacing& spacing, double joint_spacing,
-            double point_spacing, StanceRrtOptions options);
+  // `held`: the contacts every node holds at their placements (their surfaces' points never move
+  // on the manifold, so distances leave them out).
+  StanceRrt(const Scene& scene, SampleSpacing& spacing, const std::vector<Contact>& held,
+            double joint_spacing, double point_spacing, StanceRrtOptions options);
 
   // A path from q_start to q_goal; `chain` (may be empty) holds samples from q_start on, each
   // within the spacing of its predecessor: the start tree's first branch.
@@ -55,19 +58,25 @@ class StanceRrt {
   };
   using Tree = std::vector<Node>;
 
+  // The spacing measure between two nodes (<= 1: consecutive samples).
   double ratio(const Node& a, const Node& b) const;
+  // Between two nodes in units of the spacing: root positions and the points of surfaces not held
+  // / point spacing, joints / joint spacing (Euclidean; `largest`: the largest term). For nearest
+  // nodes and progress: a random target's held surfaces are not where the contacts hold them.
+  double distance(const Node& a, const Node& b, double* largest) const;
   int nearest(const Tree& tree, const Node& target) const;
   void add(Tree* tree, MotionSample sample, int parent);
   // Greedy extensions of `tree` from node `from` towards `target`, each added to the tree: the
   // last node added (`from` when none), and whether it is within the spacing of the target.
   int connect(Tree* tree, int from, const Node& target, int max_steps, bool* reached);
   void random_target(const Eigen::VectorXd& q_start, const Eigen::VectorXd& q_goal, Node* out);
-  double uniform();  // [0, 1)
+  double uniform();                                                    // [0, 1)
   std::vector<MotionSample> branch(const Tree& tree, int node) const;  // root excluded, to node
-  void shortcut(std::vector<MotionSample>* path);  // path with both ends
+  void shortcut(std::vector<MotionSample>* path);                      // path with both ends
 
   const Scene& scene_;
   SampleSpacing& spacing_;
+  std::vector<char> free_vertex_;  // per vertex of spacing_: on a surface not held
   double joint_spacing_, point_spacing_;
   StanceRrtOptions options_;
   const StanceProjector* project_ = nullptr;

@@ -135,6 +135,8 @@ bool StepMotionPlanner::set_up(const PlanStep& a, const PlanStep& b, StepMotion*
     request_.contacts.push_back(std::move(task));
   }
   held_ = int(request_.contacts.size());
+  held_contacts_.clear();
+  for (int t = 0; t < held_; ++t) held_contacts_.push_back(request_.contacts[size_t(t)].contact);
   std::vector<SurfaceRef> surfaces;
   for (const PlanStep* step : {&a, &b})
     for (const PlanContact& pc : step->contacts) {
@@ -193,9 +195,9 @@ bool StepMotionPlanner::detour(const Eigen::VectorXd& q_from, const Eigen::Vecto
     *out = {std::move(r.q), std::move(r.forces), std::move(r.torques)};
     return true;
   };
-  StanceRrtResult found =
-      StanceRrt(scene_, *spacing_, options_.joint_spacing, options_.point_spacing, options_.detour)
-          .plan(q_from, chain, q_to, project);
+  StanceRrtResult found = StanceRrt(scene_, *spacing_, held_contacts_, options_.joint_spacing,
+                                    options_.point_spacing, options_.detour)
+                              .plan(q_from, chain, q_to, project);
   if (!found.found) {
     motion->message += "; detour: " + found.message;
     return false;
