@@ -6,8 +6,8 @@
 namespace stanceplan {
 
 struct StanceRrtOptions {
-  int max_projections = 1200;  // per plan(): the detour fails beyond
-  double spread = 0.6;         // rad: the joints of a random target, around the straight path
+  int max_projections = 2500;  // per plan(): the detour fails beyond
+  double spread = 1.0;         // rad: the joints of a random target, around the straight path
   double step = 0.8;           // an extension's reference step, in units of the spacing
   int max_connect_steps = 60;  // extensions towards one target
   int shortcut_attempts = 12;
