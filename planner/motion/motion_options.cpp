@@ -35,6 +35,9 @@ std::string check_motion_options(const MotionOptions& o) {
     return "detour.max_connect_steps: expected >= 1, found " + std::to_string(d.max_connect_steps);
   if (d.shortcut_attempts < 0)
     return "detour.shortcut_attempts: expected >= 0, found " + std::to_string(d.shortcut_attempts);
+  if (d.max_shortcut_projections < 0)
+    return "detour.max_shortcut_projections: expected >= 0, found " +
+           std::to_string(d.max_shortcut_projections);
   return "";
 }
 

@@ -82,7 +82,7 @@ int StanceRrt::connect(Tree* tree, int from, const Node& target, int max_steps, 
   int at = from;
   *reached = ratio((*tree)[size_t(at)], target) <= 1.0;
   Node next;
-  for (int k = 0; k < max_steps && !*reached && projections_ < options_.max_projections; ++k) {
+  for (int k = 0; k < max_steps && !*reached && projections_ < limit_; ++k) {
     const Node& here = (*tree)[size_t(at)];
     // The reference moves each coordinate at most `step` spacings (a landing too far, the
     // spacing being non-linear in the step, is tried closer, twice).
@@ -136,9 +136,10 @@ std::vector<MotionSample> StanceRrt::branch(const Tree& tree, int node) const {
 }
 
 void StanceRrt::shortcut(std::vector<MotionSample>* path) {
+  limit_ = projections_ + options_.max_shortcut_projections;  // its own budget, after the search
   for (int attempt = 0; attempt < options_.shortcut_attempts; ++attempt) {
     const int n = int(path->size());
-    if (n < 4 || projections_ >= options_.max_projections) return;
+    if (n < 4 || projections_ >= limit_) return;
     int i = int(uniform() * n), j = int(uniform() * n);
     if (i > j) std::swap(i, j);
     if (j - i < 3) continue;
@@ -162,6 +163,7 @@ StanceRrtResult StanceRrt::plan(const Eigen::VectorXd& q_start,
                                 const Eigen::VectorXd& q_goal, const StanceProjector& project) {
   rng_.seed(options_.seed);
   projections_ = 0;
+  limit_ = options_.max_projections;
   project_ = &project;
   Tree trees[2];
   trees[0].reserve(chain.size() + 256);

@@ -81,6 +81,7 @@ class StanceRrt {
   StanceRrtOptions options_;
   const StanceProjector* project_ = nullptr;
   int projections_ = 0;
+  int limit_ = 0;  // connect() projects while projections_ < limit_
   std::mt19937_64 rng_;
   Eigen::VectorXd q_ref_;
   Node target_;
