@@ -24,6 +24,20 @@ std::string check_motion_options(const MotionOptions& o) {
   if (o.max_samples < 1)
     return "max_samples: expected >= 1, found " + std::to_string(o.max_samples);
   if (o.max_solves < 1) return "max_solves: expected >= 1, found " + std::to_string(o.max_solves);
+  const StanceRrtOptions& d = o.detour;
+  if (d.max_projections < 0)
+    return "detour.max_projections: expected >= 0, found " + std::to_string(d.max_projections);
+  if (!(d.spread >= 0.0) || !std::isfinite(d.spread))
+    return "detour.spread: expected a number >= 0 (rad), found " + found(d.spread);
+  if (!(d.step > 0.0 && d.step <= 1.0))
+    return "detour.step: expected a number in (0, 1], found " + found(d.step);
+  if (d.max_connect_steps < 1)
+    return "detour.max_connect_steps: expected >= 1, found " + std::to_string(d.max_connect_steps);
+  if (d.shortcut_attempts < 0)
+    return "detour.shortcut_attempts: expected >= 0, found " + std::to_string(d.shortcut_attempts);
+  if (d.max_shortcut_projections < 0)
+    return "detour.max_shortcut_projections: expected >= 0, found " +
+           std::to_string(d.max_shortcut_projections);
   return "";
 }
 

@@ -4,6 +4,8 @@
 // contact rises from its surface before it travels.
 #include <string>
 
+#include "planner/motion/stance_rrt_options.h"
+
 namespace stanceplan {
 
 struct MotionOptions {
@@ -26,6 +28,8 @@ struct MotionOptions {
   // At most this many projections per segment of a step (lift, travel, approach; failed ones,
   // retries and bridges included): one that needs more fails with that reason.
   int max_solves = 300;
+  // The detour on the stance manifold tried when the straight travel fails (stance_rrt.h).
+  StanceRrtOptions detour;
 };
 
 // "" when the options are usable, else what is wrong ("clearance: expected >= 0, found -1").

@@ -33,6 +33,16 @@ class SampleSpacing {
 
   SpacingMeasure measure(const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b);
 
+  // For measuring one configuration against many (a tree's nearest node): the world positions of
+  // the measured vertices at q, stored once per configuration (resized to num_vertices()), and
+  // the measure between two configurations from them (no kinematics, no allocation).
+  int num_vertices() const { return num_vertices_; }
+  SurfaceRef vertex_surface(int i) const { return vertex_surfaces_[size_t(i)]; }
+  void vertices(const Eigen::VectorXd& q, std::vector<Eigen::Vector3d>* p_W);
+  SpacingMeasure measure(const Eigen::VectorXd& q_a, const std::vector<Eigen::Vector3d>& p_a_W,
+                         const Eigen::VectorXd& q_b,
+                         const std::vector<Eigen::Vector3d>& p_b_W) const;
+
   // "robot/l_knee_p" or "robot/l_sole" for the worst of a measure.
   std::string joint_name(const SpacingMeasure& m) const;
   std::string surface_name(const SpacingMeasure& m) const;
@@ -44,9 +54,12 @@ class SampleSpacing {
     std::vector<Eigen::Vector3d> vertices_L;
   };
   void kinematics(const Eigen::VectorXd& q, std::vector<ModelData>& data) const;
+  SpacingMeasure joint_measure(const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b) const;
 
   const Scene& scene_;
   std::vector<MeasuredSurface> surfaces_;
+  int num_vertices_ = 0;
+  std::vector<SurfaceRef> vertex_surfaces_;  // per vertex of vertices()
   std::vector<ModelData> data_a_, data_b_;
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "planner/motion/configuration_path.h"
+#include "planner/motion/stance_rrt.h"
 
 namespace stanceplan {
 namespace {
@@ -134,6 +135,8 @@ bool StepMotionPlanner::set_up(const PlanStep& a, const PlanStep& b, StepMotion*
     request_.contacts.push_back(std::move(task));
   }
   held_ = int(request_.contacts.size());
+  held_contacts_.clear();
+  for (int t = 0; t < held_; ++t) held_contacts_.push_back(request_.contacts[size_t(t)].contact);
   std::vector<SurfaceRef> surfaces;
   for (const PlanStep* step : {&a, &b})
     for (const PlanContact& pc : step->contacts) {
@@ -155,6 +158,12 @@ PostureResult StepMotionPlanner::project(const Segment& segment, double s,
     task.placement = path.placement_at(s);                        // E10-E13
     task.standoff = path.h_from + s * (path.h_to - path.h_from);  // E9 offset along s2's normal
   }
+  return project_reference(q_ref_, q_prev, previous, retry);
+}
+
+PostureResult StepMotionPlanner::project_reference(const Eigen::VectorXd& q_ref,
+                                                   const Eigen::VectorXd& q_prev,
+                                                   const MotionSample* previous, bool retry) {
   for (int t = 0; t < held_; ++t) request_.contacts[size_t(t)].force_guess_W.clear();
   if (previous)  // warm start: the previous sample's forces (held contacts only carry force)
     for (const VertexForce& f : previous->forces) {
@@ -165,12 +174,40 @@ PostureResult StepMotionPlanner::project(const Segment& segment, double s,
       task.force_guess_W[size_t(f.vertex)] = f.force_W;
     }
   request_.q_init = q_prev;
-  request_.q_ref = q_ref_;  // E22: the interpolated configuration
+  request_.q_ref = q_ref;  // E22: the interpolated configuration
   ++solves_;
   PostureResult r = solver_.solve(request_);
   if (r.status == PostureStatus::Solved || !retry) return r;
   ++solves_;
   return retry_solver_.solve(request_);
+}
+
+bool StepMotionPlanner::detour(const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                               std::vector<MotionSample>* samples, size_t first,
+                               StepMotion* motion) {
+  const std::vector<MotionSample> chain(samples->begin() + long(first), samples->end());
+  const StanceProjector project = [&](const MotionSample& from, const Eigen::VectorXd& q_ref,
+                                      MotionSample* out) {
+    request_.contacts.resize(size_t(held_));  // the moving link free (E20 keeps it clear)
+    PostureResult r =
+        project_reference(q_ref, from.q, from.forces.empty() ? nullptr : &from, false);
+    if (r.status != PostureStatus::Solved) return false;
+    *out = {std::move(r.q), std::move(r.forces), std::move(r.torques)};
+    return true;
+  };
+  StanceRrtResult found = StanceRrt(scene_, *spacing_, held_contacts_, options_.joint_spacing,
+                                    options_.point_spacing, options_.detour)
+                              .plan(q_from, chain, q_to, project);
+  if (!found.found) {
+    motion->message += "; detour: " + found.message;
+    return false;
+  }
+  samples->resize(first);
+  samples->insert(samples->end(), std::make_move_iterator(found.path.begin()),
+                  std::make_move_iterator(found.path.end()));
+  motion->status = MotionStatus::Solved;
+  motion->message.clear();
+  return true;
 }
 
 std::string StepMotionPlanner::describe(const SpacingMeasure& m) const {
@@ -246,7 +283,10 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
         why = "no posture (" + r.message + ")";
       }
     }
-    if (++halvings > options_.max_halvings) {
+    // A step halved below ds_max / 2^max_halvings fails too, even when the halvings came in
+    // turns with successes: samples creeping ever closer to a point they never pass (an obstacle
+    // across the reference, a jump of the projection there) would spend the whole budget.
+    if (++halvings > options_.max_halvings || ds < std::ldexp(ds_max, -options_.max_halvings)) {
       motion->status = failure;
       motion->message = std::string(segment.name) + " at s = " + fixed3(s_next) + ": " + why;
       return false;
@@ -316,7 +356,8 @@ void StepMotionPlanner::plan_segments(const PlanStep& a, const PlanStep& b, Step
     }
   }
   if (!travelled &&
-      !run_segment({"travel", &q_from, &q_to, &q_to, std::nullopt}, &samples, motion)) {
+      !run_segment({"travel", &q_from, &q_to, &q_to, std::nullopt}, &samples, motion) &&
+      !detour(q_from, q_to, &samples, before, motion)) {
     if (!normal_failure.empty())
       motion->message += " (and along the normal: " + normal_failure + ")";
     return;

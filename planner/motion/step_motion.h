@@ -11,6 +11,9 @@
 // Each sample is projected into F_sigma by the IK-statics program (E6-E20, warm started from the
 // previous sample: one PostureSolver, one request reused); where a projection fails or lands
 // farther than the spacing from its predecessor, the interpolation step is halved (bisection).
+// When the travel still fails (its straight reference through an obstacle, or the projection stuck
+// behind one), a detour on the stance manifold replaces it (stance_rrt.h: a bidirectional RRT
+// whose nodes are projected samples, seeded with the straight samples found).
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -77,6 +80,13 @@ class StepMotionPlanner {
   // when given); with `retry`, a failed projection is solved again by retry_solver_.
   PostureResult project(const Segment& segment, double s, const Eigen::VectorXd& q_prev,
                         const MotionSample* previous, bool retry);
+  // The projection of reference q_ref with the contacts request_ holds.
+  PostureResult project_reference(const Eigen::VectorXd& q_ref, const Eigen::VectorXd& q_prev,
+                                  const MotionSample* previous, bool retry);
+  // The straight travel from q_from to q_to failed (its samples from `first` on reach some way):
+  // a detour on the stance manifold (stance_rrt.h) replaces them, the moving link free.
+  bool detour(const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+              std::vector<MotionSample>* samples, size_t first, StepMotion* motion);
   ContactTask lift_task(const Contact& contact, const Eigen::VectorXd& q) const;
   // s1 straight up from its placement at q to the clearance.
   LinkPath lift_path(const Contact& contact, const Eigen::VectorXd& q) const;
@@ -85,9 +95,10 @@ class StepMotionPlanner {
   PostureSolver solver_;        // warm projections: few iterations, small fixed barrier
   PostureSolver retry_solver_;  // a sample solver_ fails: adaptive barrier, more iterations
   MotionOptions options_;
-  int held_ = 0;            // request_.contacts[0, held_): sigma, loaded, placements fixed
-  PostureRequest request_;  // reused for every sample
-  Eigen::VectorXd q_ref_;   // workspace of the interpolation
+  int held_ = 0;  // request_.contacts[0, held_): sigma, loaded, placements fixed
+  std::vector<Contact> held_contacts_;    // their contacts
+  PostureRequest request_;                // reused for every sample
+  Eigen::VectorXd q_ref_;                 // workspace of the interpolation
   std::optional<SampleSpacing> spacing_;  // surfaces of both steps' contacts
   int solves_ = 0;
   int bridge_depth_ = 0;

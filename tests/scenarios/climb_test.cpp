@@ -21,6 +21,7 @@
 #include "planner/search/stance_search.h"
 #include "tests/support/paths.h"
 #include "tests/support/planned_scenario.h"
+#include "tests/support/scenario_motion.h"
 
 namespace stanceplan {
 namespace {
@@ -110,6 +111,9 @@ TEST(ClimbOnRobotPlan, PlansCertifiesAndTheClimberCrossesOnTheSupportersHands) {
   const int o = system.offset(climber);
   EXPECT_LT(steps.front().q[o], -0.4);
   EXPECT_GT(steps.back().q[o], 0.4);
+  // The motion between the steps: every step moves (the swing foot around the platforms' edges
+  // by the detour, planner/motion/stance_rrt.h) and certifies sample by sample.
+  test::expect_motion_certified(scenario, result, "humanoid_climb_on_robot");
 }
 
 }  // namespace

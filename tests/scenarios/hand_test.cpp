@@ -74,6 +74,10 @@ TEST(HandBallRotate, PlanCertifiedBallUpsideDownThreeFingertipsOrMoreAtEveryStep
       steps.back().q.segment<4>(p.scenario.scene.system.offset(ball) + Entity::kBaseQuaternion);
   const double angle_to_half_turn = 2.0 * std::acos(std::min(1.0, std::abs(q[1]) / q.norm()));
   EXPECT_LT(angle_to_half_turn, 0.5) << q.transpose();
+  // The motion between the steps: every step moves (fingertips around the ball by the detour,
+  // planner/motion/stance_rrt.h, where the straight path goes through it) and certifies sample by
+  // sample.
+  test::expect_motion_certified(p.scenario, p.result, "ball");
 }
 
 TEST(HandPenRegrasp, PlanCertifiedGraspMovesToTheFrontEnd) {

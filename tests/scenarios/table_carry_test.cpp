@@ -10,6 +10,7 @@
 #include "planner/search/stance_search.h"
 #include "tests/support/paths.h"
 #include "tests/support/planned_scenario.h"
+#include "tests/support/scenario_motion.h"
 
 namespace stanceplan {
 namespace {
@@ -49,6 +50,8 @@ TEST(TableCarryPlan, PlansCertifiesTheHandsNeverLetGoAndTheFeetWalkTheTable1Poin
     const int o = system.offset(system.find_entity(name));
     EXPECT_NEAR(steps.back().q[o] - steps.front().q[o], 1.5, 0.1) << name;
   }
+  // The motion between the steps: every step moves and certifies sample by sample.
+  test::expect_motion_certified(scenario, result, "two_humanoids_table");
 }
 
 }  // namespace
