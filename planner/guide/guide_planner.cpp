@@ -9,6 +9,7 @@
 #include "planner/guide/goal_posture.h"
 #include "planner/guide/guide_space.h"
 #include "planner/guide/guide_validity.h"
+#include "planner/guide/hand_over.h"
 #include "planner/guide/ompl_path.h"
 
 namespace stanceplan {
@@ -144,6 +145,17 @@ void state_goal_joints(const System& system, const Eigen::VectorXd& q_goal, Guid
   }
 }
 
+// An object's milestones state its orientation only when the task turns it (its goal orientation
+// differs from the initial one): the hand-over posture's tilt (0.25 rad for the dual arm's
+// cylinder) is one grasp's, not the task's, and stated it pulls every node towards it.
+void state_task_turns_only(const Problem& problem, const Eigen::VectorXd& q_goal,
+                           ComputedGuide& guide) {
+  const GuideSpace whole(problem.scene.system, problem.initial_configuration, q_goal);
+  for (GuideMilestone& m : guide.milestones)
+    for (GuideMilestone::Root& root : m.roots)
+      if (!whole.turns(root.entity)) root.rpy.reset();
+}
+
 }  // namespace
 
 const char* to_string(GuideStatus status) {
@@ -171,6 +183,20 @@ ComputedGuide compute_guide(const Problem& problem, const GuideOptions& options)
   }
   guide.q_goal = posture.q;
   guide.phases = order_goal_contacts(problem, posture);
+  // An object that one robot cannot carry all the way is handed over (hand_over.h): the path
+  // passes through the posture where both robots hold it.
+  if (const std::optional<HandOver> hand_over =
+          find_hand_over(problem, posture.q, options, &guide.hand_over_note)) {
+    guide.hand_over_solves = hand_over->solves;
+    if (!plan_leg(problem, problem.initial_configuration, hand_over->q, options, guide))
+      return failed(started, guide);
+    guide.hand_over_milestone = int(guide.milestones.size());
+    if (!plan_leg(problem, hand_over->q, posture.q, options, guide)) return failed(started, guide);
+    state_task_turns_only(problem, posture.q, guide);
+    guide.status = GuideStatus::Computed;
+    guide.time_s = seconds_since(started);
+    return guide;
+  }
   // On the way to a changed posture the robot first walks in its own (approach.h), when the
   // approach configuration is valid where the whole path's ends are.
   std::optional<Approach> approach = valid_approach(problem, posture.q, options, guide);
@@ -180,6 +206,7 @@ ComputedGuide compute_guide(const Problem& problem, const GuideOptions& options)
   if (approach) {
     walk_level(problem, *approach, guide);
     guide.approach_milestones = int(guide.milestones.size());
+    guide.approach_back_off = approach->back_off;
     if (!plan_leg(problem, approach->q, posture.q, options, guide)) return failed(started, guide);
   }
   state_goal_joints(problem.scene.system, posture.q, guide.milestones.back());
