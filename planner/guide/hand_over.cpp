@@ -10,11 +10,11 @@
 namespace stanceplan {
 namespace {
 
-constexpr double kMoves = 0.01;        // m: an object that moves less needs no carrier
-constexpr double kAntipodal = -0.99;   // cosine of the normals of two opposed facets
-constexpr int kFacetPairsTried = 2;    // per carrier, the facet pairs most across its way
-constexpr int kMaxSolves = 8;          // hand-over postures tried
-constexpr double kAlongStep = 0.02;    // of the straight way, searched for the hand-over point
+constexpr double kMoves = 0.01;       // m: an object that moves less needs no carrier
+constexpr double kAntipodal = -0.99;  // cosine of the normals of two opposed facets
+constexpr int kFacetPairsTried = 2;   // per carrier, the facet pairs most across its way
+constexpr int kMaxSolves = 8;         // hand-over postures tried
+constexpr double kAlongStep = 0.02;   // of the straight way, searched for the hand-over point
 
 // A surface's stretched chain (hand_over.h): where its first moving joint is and how far the
 // surface reaches from there.
@@ -32,8 +32,7 @@ Reach surface_reach(const Problem& problem, const std::vector<ModelData>& data, 
   double below = reach.length;  // the chain below the joint being looked at
   for (int l = s.link; l > 0; l = model.links[size_t(l)].parent_link) {
     const Joint& j = model.joints[size_t(model.links[size_t(l)].parent_joint)];
-    if (j.type == JointType::Prismatic)
-      below += std::max(std::abs(j.lower), std::abs(j.upper));
+    if (j.type == JointType::Prismatic) below += std::max(std::abs(j.lower), std::abs(j.upper));
     if (j.movable()) {  // the chain from this joint's origin down
       reach.start_W = data[size_t(ref.entity)].T_WL[size_t(j.parent_link)] * j.T_PJ.translation();
       reach.length = below;
@@ -89,8 +88,9 @@ std::vector<Grasp> grasps_of(const Problem& problem, const std::vector<ModelData
   Eigen::Vector3d across = Eigen::Vector3d::UnitZ().cross(p_W - reach.start_W);
   across = across.norm() > 1e-9 ? across.normalized() : Eigen::Vector3d::UnitX();
   const auto normal_W = [&](SurfaceRef r) {
-    return Eigen::Vector3d(data[size_t(r.entity)].T_WL[size_t(scene.surfaces.get(r).link)].linear() *
-                           scene.surfaces.get(r).normal_L());
+    return Eigen::Vector3d(
+        data[size_t(r.entity)].T_WL[size_t(scene.surfaces.get(r).link)].linear() *
+        scene.surfaces.get(r).normal_L());
   };
   const auto is_taken = [&](SurfaceRef r) {
     return std::any_of(taken.begin(), taken.end(), [&](SurfaceRef t) { return t == r; });

@@ -27,11 +27,11 @@
 namespace stanceplan {
 
 struct HandOver {
-  int object = -1;          // entity index
-  int from = -1, to = -1;   // the carriers (entity indices)
-  Eigen::VectorXd q;        // the hand-over posture, both carriers grasping the object
+  int object = -1;         // entity index
+  int from = -1, to = -1;  // the carriers (entity indices)
+  Eigen::VectorXd q;       // the hand-over posture, both carriers grasping the object
   std::vector<StanceContact> grasps;
-  int solves = 0;           // postures tried
+  int solves = 0;  // postures tried
 };
 
 // The hand-over `q_goal` (the goal posture) needs, nullopt when none does. `note` says why a

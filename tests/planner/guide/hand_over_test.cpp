@@ -38,7 +38,8 @@ TEST(GuideHandOver, TheCylinderPassesFromTheArmThatReachesAToTheOneThatReachesB)
     // E8-E9: every pad lies on its facet's plane, facing it.
     const Surface& pad = s.scene.surfaces.get(c.contact.s1);
     const Surface& facet = s.scene.surfaces.get(c.contact.s2);
-    const Eigen::Isometry3d T_WP = data[size_t(c.contact.s1.entity)].T_WL[size_t(pad.link)] * pad.T_LS;
+    const Eigen::Isometry3d T_WP =
+        data[size_t(c.contact.s1.entity)].T_WL[size_t(pad.link)] * pad.T_LS;
     const Eigen::Isometry3d T_WF =
         data[size_t(c.contact.s2.entity)].T_WL[size_t(facet.link)] * facet.T_LS;
     EXPECT_NEAR((T_WF.inverse() * T_WP.translation()).z(), 0.0, 1e-4);
