@@ -42,7 +42,8 @@ bool may_touch(const Scene& scene, int e, int link, int f, int other_link,
 }
 
 // Whether fixed robot r has a surface the contact pairs let touch object o: a carrier of it, whose
-// arm moves with it (hand_over.h), never an obstacle in the object's way.
+// moving links (its arm, its fingers) move with the object (hand_over.h), never obstacles in the
+// object's way.
 bool carries(const Scene& scene, int r, int o,
              const std::vector<std::pair<std::string, std::string>>& patterns) {
   for (int i = 0; i < int(scene.surfaces.of(r).size()); ++i)
@@ -78,7 +79,7 @@ std::vector<PairRule> pair_rules(const Problem& problem, const GuideOptions& opt
           may_touch(scene, x.entity, x.link, y.entity, y.link, options.contact_pairs))
         rules[p] = PairRule::Ignored;
       if (scene.system.entity(x.entity).kind == EntityKind::FixedRobot &&
-          scene.system.entity(y.entity).kind == EntityKind::Object &&
+          scene.system.entity(y.entity).kind == EntityKind::Object && x.moves &&
           carries(scene, x.entity, y.entity, options.contact_pairs))
         rules[p] = PairRule::Ignored;
     }
