@@ -64,7 +64,13 @@ void print_guide_stats(const ComputedGuide& guide, std::ostream& out) {
   if (!guide.approach_note.empty()) out << "stats: guide: " << guide.approach_note << "\n";
   if (guide.approach_milestones > 0)
     out << "stats: guide: " << guide.approach_milestones
-        << " milestones approach the goal's footholds in the initial posture\n";
+        << " milestones approach the goal's footholds in the initial posture ("
+        << guide.approach_back_off << " m short of them)\n";
+  if (guide.hand_over_milestone > 0)
+    out << "stats: guide: milestone " << guide.hand_over_milestone
+        << " hands the object over (both carriers hold it; " << guide.hand_over_solves
+        << " grasps tried)\n";
+  if (!guide.hand_over_note.empty()) out << "stats: guide: " << guide.hand_over_note << "\n";
 }
 
 std::string milestone_offer(const Scenario& scenario, const ComputedGuide& guide, size_t k) {

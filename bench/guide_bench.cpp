@@ -32,6 +32,7 @@ const std::vector<std::pair<std::string, std::string>> kPairs = {
     {"desk", "humanoid_sit_desk.yaml"},
     {"ball", "hand_ball_rotate.yaml"},
     {"pen", "hand_pen_regrasp.yaml"},
+    {"climb", "humanoid_climb_on_robot.yaml"},
 };
 
 std::string scenario_path(const std::string& relative) {
@@ -46,6 +47,7 @@ void guide_time(benchmark::State& state, const std::string& name) {
   state.counters["milestones"] = double(guide.milestones.size());
   state.counters["posture_s"] = guide.posture_time_s;
   state.counters["path_s"] = guide.path_time_s;
+  state.counters["hand_over"] = guide.hand_over_milestone;
 }
 
 // The whole plan: the guide (when computed) and the search, one solver process.

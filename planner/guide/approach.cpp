@@ -79,7 +79,7 @@ std::optional<Approach> approach_configuration(const Problem& problem,
   const Scene& scene = problem.scene;
   const System& system = scene.system;
   const std::vector<ModelData> at_goal = system_kinematics(system, q_goal);
-  Approach approach{q_goal, {}, {}};
+  Approach approach{q_goal, {}, {}, back_off, limbs_only};
   bool any = false;
   for (int e = 0; e < system.num_entities(); ++e) {
     const Entity& entity = system.entity(e);

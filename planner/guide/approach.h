@@ -23,6 +23,8 @@ struct Approach {
   // The kept contacts, "entity/surface" pairs: the contacts offered on the way to q.
   std::vector<std::pair<std::string, std::string>> kept;
   std::vector<int> robots;  // the robots that approach (entity indices)
+  double back_off = 0.0;    // m: how far short of the goal's footholds (see below)
+  bool limbs_only = false;  // whether the arms keep the goal posture's (see below)
 };
 
 // The approach is tried backed off by up to kMaxBackOff, every kBackOffStep (m).

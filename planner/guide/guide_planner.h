@@ -33,7 +33,13 @@ struct ComputedGuide {
   ContactPhases phases;
   // The first milestones that walk to the approach configuration (approach.h), 0 without one.
   int approach_milestones = 0;
-  std::string approach_note;  // why a posture change has no approach, "" otherwise
+  double approach_back_off = 0.0;  // m: the approach's feet short of the goal's footholds
+  std::string approach_note;       // why a posture change has no approach, "" otherwise
+  // A carried object handed from one robot to another (hand_over.h): the milestone (counted from
+  // 1) where both hold it, 0 without one; why a needed one was not found.
+  int hand_over_milestone = 0;
+  int hand_over_solves = 0;
+  std::string hand_over_note;
   // When it completes a partial guide (partial_guide.h): the roots it gave poses to.
   std::vector<int> completed;
   int raw_waypoints = 0;  // the planner's path before the shortcuts

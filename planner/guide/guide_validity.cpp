@@ -12,7 +12,6 @@
 #include "planner/solver/pinned_pairs.h"
 
 namespace stanceplan {
-namespace {
 
 bool offered(const Scene& scene, SurfaceRef a, SurfaceRef b,
              const std::vector<std::pair<std::string, std::string>>& patterns) {
@@ -26,6 +25,8 @@ bool offered(const Scene& scene, SurfaceRef a, SurfaceRef b,
   return false;
 }
 
+namespace {
+
 // Whether link `link` of entity e carries a surface that the contact pairs let touch a surface
 // on link `other_link` of entity f.
 bool may_touch(const Scene& scene, int e, int link, int f, int other_link,
@@ -37,6 +38,17 @@ bool may_touch(const Scene& scene, int e, int link, int f, int other_link,
           offered(scene, {e, i}, {f, j}, patterns))
         return true;
   }
+  return false;
+}
+
+// Whether fixed robot r has a surface the contact pairs let touch object o: a carrier of it, whose
+// moving links (its arm, its fingers) move with the object (hand_over.h), never obstacles in the
+// object's way.
+bool carries(const Scene& scene, int r, int o,
+             const std::vector<std::pair<std::string, std::string>>& patterns) {
+  for (int i = 0; i < int(scene.surfaces.of(r).size()); ++i)
+    for (int j = 0; j < int(scene.surfaces.of(o).size()); ++j)
+      if (offered(scene, {r, i}, {o, j}, patterns)) return true;
   return false;
 }
 
@@ -62,10 +74,15 @@ std::vector<PairRule> pair_rules(const Problem& problem, const GuideOptions& opt
       rules[p] = PairRule::Ignored;
       continue;
     }
-    for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}})
+    for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
       if (scene.system.entity(x.entity).kind == EntityKind::FloatingRobot &&
           may_touch(scene, x.entity, x.link, y.entity, y.link, options.contact_pairs))
         rules[p] = PairRule::Ignored;
+      if (scene.system.entity(x.entity).kind == EntityKind::FixedRobot &&
+          scene.system.entity(y.entity).kind == EntityKind::Object && x.moves &&
+          carries(scene, x.entity, y.entity, options.contact_pairs))
+        rules[p] = PairRule::Ignored;
+    }
   }
   return rules;
 }

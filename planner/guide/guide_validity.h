@@ -9,6 +9,9 @@
 //      hands) with the links of other entities carrying a surface they may touch (the contact
 //      pairs): not checked, as RBPRM checks only the trunk and lets the limbs find their contacts
 //      (without this the feet, interpolated rigidly, cannot pass a stair's riser);
+//    - a fixed robot's moving links (arm, fingers; not its base or palm) with an object it may
+//      touch (a carrier: its arm moves with the object, the guide plans the object's way, not
+//      the arm's);
 //    - the other links of a contact of the initial or goal stance (an object on a platform, a
 //      fingertip on a ball, a palm on a handle): they may touch, but sink into each other by at
 //      most kTouchDepth more than at either end;
@@ -32,6 +35,11 @@
 #include "planner/plan/problem.h"
 
 namespace stanceplan {
+
+// Whether the contact pairs (search.contact_pairs patterns; empty: every pair) offer a contact
+// between surfaces a and b, in either order.
+bool offered(const Scene& scene, SurfaceRef a, SurfaceRef b,
+             const std::vector<std::pair<std::string, std::string>>& patterns);
 
 // How deep the links of a stance's contact may sink into each other along the guide (m).
 inline constexpr double kTouchDepth = 0.005;

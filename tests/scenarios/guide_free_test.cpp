@@ -45,7 +45,7 @@ TEST(GuideFree, TheStairsPlanAndCertify) {
 }
 
 // The paper's scenarios that plan guide-free within the CI budget (scenarios/guide_free/README.md
-// says what the desk and the dual-arm hand-over do).
+// says what the desk does).
 TEST(GuideFree, TheBallTurnedOverInTheHandPlansAndCertifies) {
   Scenario s;
   const SearchResult result = plan_guide_free("ball", &s);
@@ -62,6 +62,14 @@ TEST(GuideFree, TheTableCarriedByTwoHumanoidsPlansAndCertifies) {
   Scenario s;
   const SearchResult result = plan_guide_free("table", &s);
   test::expect_certified(s, result, "guide_free_table");
+}
+
+// The dual-arm hand-over: no arm reaches both platforms, so the guide hands the cylinder from arm 1
+// to arm 2 at a posture where both grasp it (planner/guide/hand_over.h).
+TEST(GuideFree, TheDualArmHandOverPlansAndCertifies) {
+  Scenario s;
+  const SearchResult result = plan_guide_free("dual_arm", &s);
+  test::expect_certified(s, result, "guide_free_dual_arm");
 }
 
 // The climb: the supporter's fixed feet are its supports (the stances' contacts count for the
