@@ -36,13 +36,17 @@ TEST(SupportShare, ScoresTheGapAndTheNormalsAtTheGuidePosture) {
   EXPECT_GT(knee, 0.4);
 }
 
-TEST(SupportShare, OrdersTheSoleAboveTheGuidedTreadFirst) {
-  const Scene scene = test::humanoid_scene("stairs");
-  // The guide's posture: standing with the waist above tread 5 (x 1.55-2.15 m, z = 0.5 m).
+// The guide's posture: standing with the waist above tread 5 (x 1.55-2.15 m, z = 0.5 m).
+auto guide_above_tread_5(const Scene& scene) {
   Eigen::VectorXd q = test::standing_configuration(scene);
   q[0] = 1.7;
   q[2] = 0.93 + 0.5;
-  const auto guide = system_kinematics(scene.system, q);
+  return system_kinematics(scene.system, q);
+}
+
+TEST(SupportShare, OrdersTheSoleAboveTheGuidedTreadFirst) {
+  const Scene scene = test::humanoid_scene("stairs");
+  const auto guide = guide_above_tread_5(scene);
   std::vector<Candidate> list = {add(scene, "robot/r_sole", "env/floor"),
                                  add(scene, "robot/r_knee", "env/tread_5"),
                                  add(scene, "robot/r_sole", "env/tread_3"),
@@ -71,10 +75,7 @@ TEST(SupportShare, OrdersTheSoleAboveTheGuidedTreadFirst) {
 // below it still after them.
 TEST(SupportShare, PutsAdditionsTheGuideRealisesBeforeRemovals) {
   const Scene scene = test::humanoid_scene("stairs");
-  Eigen::VectorXd q = test::standing_configuration(scene);
-  q[0] = 1.7;
-  q[2] = 0.93 + 0.5;
-  const auto guide = system_kinematics(scene.system, q);
+  const auto guide = guide_above_tread_5(scene);
   std::vector<Candidate> list = {add(scene, "robot/r_sole", "env/tread_4"),
                                  {false, test::task(scene, "robot/l_sole", "env/floor").contact},
                                  add(scene, "robot/r_sole", "env/tread_5")};
