@@ -63,8 +63,8 @@ void print_guide_stats(const ComputedGuide& guide, std::ostream& out) {
   out << line;
   if (!guide.approach_note.empty()) out << "stats: guide: " << guide.approach_note << "\n";
   if (guide.approach_milestones > 0)
-    out << "stats: guide: " << guide.approach_milestones
-        << " milestones approach " << (guide.stages > 0 ? "the crouch's" : "the goal's")
+    out << "stats: guide: " << guide.approach_milestones << " milestones approach "
+        << (guide.stages > 0 ? "the crouch's" : "the goal's")
         << " footholds in the initial posture (" << guide.approach_back_off
         << " m short of them)\n";
   if (guide.stages > 0)
