@@ -63,9 +63,13 @@ void print_guide_stats(const ComputedGuide& guide, std::ostream& out) {
   out << line;
   if (!guide.approach_note.empty()) out << "stats: guide: " << guide.approach_note << "\n";
   if (guide.approach_milestones > 0)
-    out << "stats: guide: " << guide.approach_milestones
-        << " milestones approach the goal's footholds in the initial posture ("
-        << guide.approach_back_off << " m short of them)\n";
+    out << "stats: guide: " << guide.approach_milestones << " milestones approach "
+        << (guide.stages > 0 ? "the crouch's" : "the goal's")
+        << " footholds in the initial posture (" << guide.approach_back_off
+        << " m short of them)\n";
+  if (guide.stages > 0)
+    out << "stats: guide: the last " << guide.stages << " milestones change the posture in stages ("
+        << guide.stage_solves << " posture solves)\n";
   if (guide.hand_over_milestone > 0)
     out << "stats: guide: milestone " << guide.hand_over_milestone
         << " hands the object over (both carriers hold it; " << guide.hand_over_solves

@@ -48,6 +48,7 @@ void guide_time(benchmark::State& state, const std::string& name) {
   state.counters["posture_s"] = guide.posture_time_s;
   state.counters["path_s"] = guide.path_time_s;
   state.counters["hand_over"] = guide.hand_over_milestone;
+  state.counters["stages"] = guide.stages;
 }
 
 // The whole plan: the guide (when computed) and the search, one solver process.

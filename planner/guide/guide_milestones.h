@@ -2,10 +2,11 @@
 // Milestones sampled along the guide path (docs/METHOD.md section 3), in the form the search reads
 // from a scenario's `guide:` section: partial milestones stating the pose of each moving root
 // (its position; an object's orientation too when it turns between the two postures), nothing
-// else, but for the goal milestone, which states the robots' joints of the goal posture, and the
-// approach's milestones (approach.h), which offer the contacts kept from the initial stance only.
-// Elsewhere the search offers search.contact_pairs, and its candidate pruning (contact_reach)
-// already keeps the surfaces out of reach out of it.
+// else, but for the goal milestone, which states the robots' joints of the goal posture, the
+// approach's milestones (approach.h), which offer the contacts kept from the initial stance only,
+// and the posture change's stages (posture_stages.h), which state their joints and offer their
+// stance's contacts (the goal stage: every pair). Elsewhere the search offers search.contact_pairs,
+// and its candidate pruning (contact_reach) already keeps the surfaces out of reach out of it.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -28,8 +29,9 @@ struct GuideMilestone {
   };
   std::vector<Root> roots;
   // The contact pairs offered while the milestone is the target ("entity/surface" patterns, as a
-  // scenario's milestone `contacts:`); empty: search.contact_pairs. Only the approach's milestones
-  // state some (approach.h): the contacts kept from the initial stance.
+  // scenario's milestone `contacts:`); empty: search.contact_pairs. The approach's milestones
+  // state the contacts kept from the initial stance (approach.h), the stages theirs
+  // (posture_stages.h), the hand-over's the grasps (hand_over.h).
   std::vector<std::pair<std::string, std::string>> contacts;
 };
 

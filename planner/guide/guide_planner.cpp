@@ -11,6 +11,7 @@
 #include "planner/guide/guide_validity.h"
 #include "planner/guide/hand_over.h"
 #include "planner/guide/ompl_path.h"
+#include "planner/guide/posture_stages.h"
 
 namespace stanceplan {
 namespace {
@@ -195,6 +196,24 @@ void offer_grasps(const Problem& problem, const GuideOptions& options, const Han
   for (GuideMilestone& m : guide.milestones) m.contacts = offers;
 }
 
+// A stage's milestone (posture_stages.h): the roots of the milestones before it, at the stage's
+// posture, a robot's joints stated (the solver's reference there is the stage's posture: a robot
+// that crouches is not pulled towards its standing legs), and the stage's contacts offered.
+void append_stage(const System& system, const PostureStage& stage, ComputedGuide& guide) {
+  GuideMilestone m;
+  m.roots = guide.milestones.back().roots;
+  for (GuideMilestone::Root& root : m.roots) {
+    const int o = system.offset(root.entity);
+    root.position = stage.q.segment<3>(o + Entity::kBasePosition);
+    root.rpy.reset();
+  }
+  state_goal_joints(system, stage.q, m);
+  m.contacts = stage.offered;
+  guide.milestones.push_back(m);
+  guide.milestone_configurations.push_back(stage.q);
+  guide.path.push_back(stage.q);
+}
+
 }  // namespace
 
 const char* to_string(GuideStatus status) {
@@ -243,8 +262,17 @@ ComputedGuide compute_guide(const Problem& problem, const GuideOptions& options)
     return guide;
   }
   // On the way to a changed posture the robot first walks in its own (approach.h), when the
-  // approach configuration is valid where the whole path's ends are.
+  // approach configuration is valid where the whole path's ends are; it then changes its posture
+  // in stages where they solve (posture_stages.h), standing where the first stage (the crouch)
+  // has its feet, else along one more leg of the path.
   std::optional<Approach> approach = valid_approach(problem, posture.q, options, guide);
+  std::vector<PostureStage> stages;
+  if (approach) {
+    stages = posture_stages(problem, posture.q, guide.phases, &guide.stage_solves);
+    if (!stages.empty())
+      if (std::optional<Approach> a = valid_approach(problem, stages.front().q, options, guide))
+        approach = a;
+  }
   const Eigen::VectorXd& q_end_of_first = approach ? approach->q : posture.q;
   if (!plan_leg(problem, problem.initial_configuration, q_end_of_first, options, guide))
     return failed(started, guide);
@@ -252,9 +280,16 @@ ComputedGuide compute_guide(const Problem& problem, const GuideOptions& options)
     walk_level(problem, *approach, guide);
     guide.approach_milestones = int(guide.milestones.size());
     guide.approach_back_off = approach->back_off;
-    if (!plan_leg(problem, approach->q, posture.q, options, guide)) return failed(started, guide);
+    for (const PostureStage& stage : stages) append_stage(problem.scene.system, stage, guide);
+    guide.stages = int(stages.size());
+    if (stages.empty() && !plan_leg(problem, approach->q, posture.q, options, guide))
+      return failed(started, guide);
   }
-  state_goal_joints(problem.scene.system, posture.q, guide.milestones.back());
+  // The stages state their own joints; else the goal milestone states the goal posture's.
+  if (!stages.empty())
+    guide.q_goal = stages.back().q;
+  else
+    state_goal_joints(problem.scene.system, posture.q, guide.milestones.back());
   guide.status = GuideStatus::Computed;
   guide.time_s = seconds_since(started);
   return guide;

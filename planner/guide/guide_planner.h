@@ -35,6 +35,9 @@ struct ComputedGuide {
   int approach_milestones = 0;
   double approach_back_off = 0.0;  // m: the approach's feet short of the goal's footholds
   std::string approach_note;       // why a posture change has no approach, "" otherwise
+  // The posture change's stages after the approach (posture_stages.h), 0 without; their solves.
+  int stages = 0;
+  int stage_solves = 0;
   // A carried object handed from one robot to another (hand_over.h): the milestone (counted from
   // 1) where both hold it, 0 without one; why a needed one was not found.
   int hand_over_milestone = 0;
