@@ -117,6 +117,7 @@ bool StepMotionPlanner::set_up(const PlanStep& a, const PlanStep& b, StepMotion*
     return false;
   };
   request_.contacts.clear();
+  request_.approaching.clear();
   for (const Contact& c : a.stance.contacts()) {
     const std::string name =
         scene_.surfaces.id(scene_.system, c.s1) + "-" + scene_.surfaces.id(scene_.system, c.s2);
@@ -335,6 +336,11 @@ void StepMotionPlanner::plan_segments(const PlanStep& a, const PlanStep& b, Step
   if (lifts) lifts = along_normal("lift", a, &samples);
   std::vector<MotionSample> landing;  // computed from b upwards, appended backwards
   if (lands) lands = along_normal("approach", b, &landing);
+  // A contact made without the approach along the normal is met by the free link itself: its
+  // pinned chain may bring it down tangentially (a thigh lowered onto a seat, its sole held on the
+  // floor: within 1 cm of its placement the knee end can rise about 2 mm), so E20 holds that one
+  // pair at d >= 0 instead of the margin (PostureRequest::approaching); the other pairs keep it.
+  if (b.action == "add" && b.changed && !lands) request_.approaching = {*b.changed};
   const Eigen::VectorXd q_from = samples.empty() ? a.q : samples.back().q;
   const Eigen::VectorXd q_to = landing.empty() ? b.q : landing.back().q;
   // A surface lifted from s2 and put down on s2 again (a foot step) glides at the clearance from
