@@ -17,9 +17,11 @@ namespace {
 // beyond these, the plan's steps do not join.
 constexpr double kPlacementTolerance = 1e-3;  // m
 constexpr double kAngleTolerance = 1e-2;      // rad
-// The first interpolation step aims at this fraction of the spacing: projections move points a
-// little more than the reference does.
-constexpr double kFirstStepFraction = 0.8;
+// Every interpolation step aims at this fraction of the spacing: projections move points a
+// little more than the reference does. With each step scaled by what the last one measured, 0.9
+// rather than 0.8 (the pen: 399 -> 374 projections, 367 -> 334 samples; the table 2982 -> 2893,
+// 1103 -> 1007).
+constexpr double kFirstStepFraction = 0.9;
 // A projection that still lands too far after this many halvings has jumped (the reference moved
 // little, the solution a lot): the jump is bridged rather than halved further.
 constexpr int kHalvingsBeforeBridge = 2;
@@ -254,7 +256,8 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
           project(segment, s_next, q_prev, previous, halvings >= kHalvingsBeforeBridge);
       const SpacingMeasure m =
           r.status == PostureStatus::Solved ? spacing_->measure(q_prev, r.q) : SpacingMeasure{};
-      if (r.status == PostureStatus::Solved && m.ratio(joint, point) <= 1.0) {
+      const double ratio = m.ratio(joint, point);
+      if (r.status == PostureStatus::Solved && ratio <= 1.0) {
         q_prev = r.q;
         samples->push_back({std::move(r.q), std::move(r.forces), std::move(r.torques)});
         if (int(samples->size()) > options_.max_samples) {
@@ -264,7 +267,12 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
         }
         s = s_next;
         halvings = 0;
-        ds = std::min(ds_max, 2.0 * ds);
+        // The next step aims at kFirstStepFraction of the spacing again, scaled by what this one
+        // measured (the spacing is about linear in a short step), at most doubled: doubling
+        // after every success overshot, and 37 % of the pen's projections (27 of 72 a step)
+        // landed too far and were thrown away (with this: 633 -> 399 projections, 382 -> 367
+        // samples, at 0.8).
+        ds = std::min(ds_max, ds * std::min(2.0, kFirstStepFraction / std::max(ratio, 1e-3)));
         if (!segment.end && s >= 1.0) return true;
         continue;
       }
