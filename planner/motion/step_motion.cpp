@@ -46,6 +46,12 @@ SolverOptions projection_options(const SolverOptions& plan, const MotionOptions&
   // A warm projection converges in a few iterations; one that has not in 30 rarely does (and
   // failing samples are what a step's time is spent on: they are retried closer).
   out.max_iterations = std::min(out.max_iterations, 30);
+  // The objective is only E22 (and E23-E24) weighted 1000 times: a dual infeasibility of 1e-2 is a
+  // configuration about 1e-5 rad from the nearest point to the reference, well inside the spacing
+  // every sample is checked against; the constraints keep their tolerances (constr_viol_tol,
+  // compl_inf_tol). Measured (iterations of the same projections): pen 1446 -> 1274, table
+  // 14410 -> 13180, same solves, samples and certification.
+  out.optimality_tolerance = std::max(out.optimality_tolerance, 1e-2);
   // Each sample starts next to its solution (the previous sample): a small, fixed barrier and
   // starting points left where they are. Measured on the walk's 22 steps (same 959 solves): median
   // 231 -> 162 ms per step, p95 1012 -> 543 ms, against Ipopt's adaptive barrier from 0.1.
