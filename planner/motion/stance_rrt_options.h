@@ -6,7 +6,10 @@
 namespace stanceplan {
 
 struct StanceRrtOptions {
-  int max_projections = 2500;  // per plan(), to find a path: the detour fails beyond
+  // Per plan(), to find a path: the detour fails beyond. The desk's step 39 (the hands from over
+  // the desk top to under its edge while the robot sits down) joins after 7980; with 2500 it
+  // failed, and a step that has no motion at all (the desk's 42) spends them all, 30-40 s.
+  int max_projections = 12000;
   double spread = 1.0;         // rad: the joints of a random target, around the straight path
   double step = 0.8;           // an extension's reference step, in units of the spacing
   int max_connect_steps = 60;  // extensions towards one target

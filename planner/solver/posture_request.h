@@ -39,6 +39,12 @@ struct PostureRequest {
   // 0: the solver's options decide): set by the search for its candidates, never by the motion
   // planner or a single posture, which need every solve to run its course.
   int progress_budget = 0;
+  // Contacts about to be made whose s1 is free in this request (a motion's link approaching its
+  // surface off the normal: planner/motion/step_motion.h). E20 keeps the pair of s1's link and
+  // s2's link at distance >= 0 rather than the margin: the link must come to touch that surface,
+  // and a link pinned by its chain (a sole below a thigh held on a seat) meets it tangentially,
+  // below the margin centimetres before its placement. Every other pair keeps the margin.
+  std::vector<Contact> approaching;
 };
 
 // How Ipopt gets second derivatives: its limited-memory (L-BFGS) approximation; the Hessian of the

@@ -85,6 +85,19 @@ double collision_bound(double distance_at_guess, double margin) {
   return distance_at_guess >= -1e-6 ? std::min(margin, std::max(0.0, distance_at_guess)) : margin;
 }
 
+// Per candidate pair: whether it joins the links of a contact the request is approaching
+// (PostureRequest::approaching), whose E20 bound is 0 instead of collision_bound's.
+std::vector<bool> approaching_pairs(const Scene& scene, const PostureRequest& request) {
+  std::vector<bool> out(scene.collision ? scene.collision->pairs().size() : 0, false);
+  if (!scene.collision) return out;
+  for (const Contact& c : request.approaching) {
+    const int p = scene.collision->find_pair(c.s1.entity, scene.surfaces.get(c.s1).link,
+                                             c.s2.entity, scene.surfaces.get(c.s2).link);
+    if (p >= 0) out[size_t(p)] = true;
+  }
+  return out;
+}
+
 // The pinned pairs (pinned_pairs.h) at the link poses of `data` against their E20 bounds: an
 // Infeasible result naming the pair furthest below its bound, or nullopt when every one keeps it.
 // `guess`: the same pairs at the initial guess (their E20 bounds).
@@ -407,12 +420,17 @@ void PostureSolver::validate(const PostureRequest& request) const {
                                 " entries, the system has " + std::to_string(system.nq()));
   // A surface is the smaller side (s1) of at most one contact and then of nothing else; a larger
   // surface (s2, e.g. the floor) may support several contacts.
+  const auto exists = [&](SurfaceRef s) {
+    return s.entity >= 0 && s.entity < system.num_entities() && s.index >= 0 &&
+           s.index < int(scene_.surfaces.of(s.entity).size());
+  };
+  for (const Contact& c : request.approaching)
+    if (!exists(c.s1) || !exists(c.s2))
+      throw std::invalid_argument("an approaching contact names a surface that does not exist");
   std::vector<SurfaceRef> smaller, larger;
   for (const ContactTask& task : request.contacts) {
     for (SurfaceRef s : {task.contact.s1, task.contact.s2})
-      if (s.entity < 0 || s.entity >= system.num_entities() || s.index < 0 ||
-          s.index >= int(scene_.surfaces.of(s.entity).size()))
-        throw std::invalid_argument("a contact names a surface that does not exist");
+      if (!exists(s)) throw std::invalid_argument("a contact names a surface that does not exist");
     const SurfaceRef r1 = task.contact.s1, r2 = task.contact.s2;
     const auto in = [](const std::vector<SurfaceRef>& list, SurfaceRef s) {
       return std::find(list.begin(), list.end(), s) != list.end();
@@ -537,9 +555,11 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     for (size_t p = 0; p < initial_distance.size(); ++p)
       if (initial_distance[p] < options.collision_active_distance) active.push_back(int(p));
   }
-  // E20 with the margin (collision_bound).
+  // E20 with the margin (collision_bound); 0 for a pair the request approaches.
+  const std::vector<bool> approaching = approaching_pairs(scene_, request);
   auto bound_of = [&](int p) {
-    return collision_bound(initial_distance[p], options.collision_margin);
+    return approaching[size_t(p)] ? 0.0
+                                  : collision_bound(initial_distance[p], options.collision_margin);
   };
   auto bounds_of = [&](const std::vector<int>& pairs) {
     std::vector<double> bounds;

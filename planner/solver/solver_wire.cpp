@@ -99,6 +99,12 @@ std::string serialize(const PostureRequest& request) {
   w.vector(request.q_init);
   w.vector(request.q_ref);
   w.pod<int32_t>(request.progress_budget);
+  w.pod<uint64_t>(request.approaching.size());
+  for (const Contact& c : request.approaching) {
+    for (int v : {c.s1.entity, c.s1.index, c.s2.entity, c.s2.index}) w.pod<int32_t>(v);
+    w.pod<uint8_t>(c.bilateral);
+    w.pod<uint8_t>(c.fixed);
+  }
   return w.bytes;
 }
 
@@ -125,6 +131,17 @@ PostureRequest deserialize_request(const std::string& bytes) {
   request.q_init = r.vector();
   request.q_ref = r.vector();
   request.progress_budget = r.pod<int32_t>();
+  const auto approaching = r.pod<uint64_t>();
+  for (uint64_t i = 0; i < approaching; ++i) {
+    Contact c;
+    c.s1.entity = r.pod<int32_t>();
+    c.s1.index = r.pod<int32_t>();
+    c.s2.entity = r.pod<int32_t>();
+    c.s2.index = r.pod<int32_t>();
+    c.bilateral = r.pod<uint8_t>();
+    c.fixed = r.pod<uint8_t>();
+    request.approaching.push_back(c);
+  }
   return request;
 }
 

@@ -389,6 +389,53 @@ TEST_F(HumanoidFlat, TouchingThroughOneContactPenetratesThroughNoOtherPair) {
   EXPECT_EQ(checked, static_cast<int>(scene.collision->pairs().size()) - 2);
 }
 
+// On the left sole, the right foot 4-5 cm up and the reference putting it back on the floor (the
+// standing posture): E20 keeps it at the margin; with the contact approaching (a motion's link
+// coming down off the normal, PostureRequest::approaching) that one pair may come below the
+// margin, down to touching and never into the floor, while every other pair keeps the margin.
+TEST_F(HumanoidFlat, AnApproachingContactMayComeBelowTheMarginOnlyForItsOwnPair) {
+  const Scene& scene = *scene_;
+  SolverOptions options = default_options();
+  options.w_configuration *= 300.0;  // the reference dominates, as in a motion's projection
+  options.max_iterations = 300;
+  const PostureSolver solver(scene, options);
+  const PostureResult standing = solver.solve(standing_request());
+  ASSERT_EQ(standing.status, PostureStatus::Solved) << standing.message;
+  const Model& model = *scene.system.entity(0).model;
+  PostureRequest request = standing_request();
+  request.contacts.pop_back();
+  request.q_init = standing.q;
+  request.q_init[7 + model.find_dof("r_hip_p")] -= 0.3;
+  request.q_init[7 + model.find_dof("r_knee_p")] += 0.6;
+  request.q_init[7 + model.find_dof("r_ankle_p")] -= 0.3;
+  request.q_ref = standing.q;
+  const SurfaceRef sole = test::surface(scene, "robot/r_sole");
+  const SurfaceRef floor = test::surface(scene, "env/floor");
+  const int pair = scene.collision->find_pair(sole.entity, scene.surfaces.get(sole).link,
+                                              floor.entity, scene.surfaces.get(floor).link);
+  ASSERT_GE(pair, 0);
+  const auto foot_to_floor = [&](const Eigen::VectorXd& q) {
+    CollisionData work(scene.system, *scene.collision);
+    work.update(*scene.collision, system_kinematics(scene.system, q));
+    return signed_distance(*scene.collision, work, pair).distance;
+  };
+  ASSERT_GT(foot_to_floor(request.q_init), 0.03);
+  // With the margin the foot stops above it (this solve even stalls there, at the bound).
+  const PostureResult kept = solver.solve(request);
+  if (kept.status == PostureStatus::Solved)
+    EXPECT_GE(foot_to_floor(kept.q), options.collision_margin - 1e-4);
+  request.approaching = {standing_request().contacts[1].contact};
+  const PostureResult down = solver.solve(request);
+  ASSERT_EQ(down.status, PostureStatus::Solved) << down.message;
+  EXPECT_LT(foot_to_floor(down.q), 0.5 * options.collision_margin);
+  EXPECT_GE(foot_to_floor(down.q), -1e-4);
+  request.approaching.clear();  // every other pair at the margin: all of them but the foot's
+  request.contacts.push_back(standing_request().contacts[1]);
+  int checked = 0;
+  EXPECT_GE(closest_pair(scene, solver, request, down.q, &checked),
+            options.collision_margin - 1e-4);
+}
+
 TEST_F(HumanoidFlat, CallingTwiceGivesBitwiseEqualResults) {
   const PostureSolver solver(*scene_, default_options());
   const PostureResult a = solver.solve(standing_request());

@@ -36,6 +36,7 @@ class Pool : public ::testing::Test {
         for (ContactTask& t : r.contacts)
           t.force_guess_W.assign(4, Eigen::Vector3d(0.5, -0.2, 40.0));
       if (i == 2) r.progress_budget = 30;  // a candidate's solve: stopped when it stalls
+      if (i == 1) r.approaching = {test::task(*scene_, "robot/r_sole", "env/floor").contact};
       r.q_init = test::standing_configuration(*scene_);
       r.q_init[0] = 0.01 * i;
       out.push_back(r);
@@ -71,6 +72,7 @@ TEST_F(Pool, TheWireFormatRoundTrips) {
     }
     EXPECT_EQ(back.q_init, r.q_init);
     EXPECT_EQ(back.progress_budget, r.progress_budget);
+    EXPECT_EQ(back.approaching, r.approaching);
     const PostureResult result = solver.solve(r);
     const PostureResult again = deserialize_result(serialize(result));
     expect_identical(result, again);
