@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "planner/io/scenario.h"
 #include "planner/plan/plan_step.h"
@@ -29,7 +30,9 @@ inline ForwardStep forward_step_plan(double step_length = 0.2) {
   right.placement = Placement{-1.49, -0.085, 0.0};
   const auto step = [&](std::vector<ContactTask> tasks, const Eigen::VectorXd& q, Stance stance,
                         const std::string& action, std::optional<Contact> changed) {
-    PostureRequest request{tasks, q, {}};
+    PostureRequest request;
+    request.contacts = std::move(tasks);
+    request.q_init = q;
     const PostureResult result = solver.solve(request);
     EXPECT_EQ(result.status, PostureStatus::Solved) << action << ": " << result.message;
     out.plan.steps.push_back(make_plan_step(request, result, stance, action, changed));
