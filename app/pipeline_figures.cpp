@@ -55,9 +55,9 @@ void write_strip(const render::PlanView& plan, const render::SequenceOptions& op
       << (plan.plan.steps.size() == 1 ? " step" : " steps") << " in " << path << "\n";
 }
 
-bool has_motion(const Plan& plan) {
-  return std::any_of(plan.steps.begin(), plan.steps.end(),
-                     [](const PlanStep& s) { return s.motion && !s.motion->samples.empty(); });
+// Frames per step of the timeline played at files.fps, step_seconds each (GIF and video).
+int frames_per_step(const FigureFiles& files) {
+  return std::max(1, int(std::lround(files.fps * files.step_seconds)));
 }
 
 // The motion at a steady speed: step_seconds per step whatever its number of samples, the
@@ -65,7 +65,7 @@ bool has_motion(const Plan& plan) {
 std::vector<render::Image> motion_frames(const render::PlanView& plan,
                                          render::SequenceRenderer& sequence,
                                          const FigureFiles& files) {
-  const int per_step = std::max(1, int(std::lround(files.fps * files.step_seconds)));
+  const int per_step = frames_per_step(files);
   std::vector<render::Image> frames{sequence.render_step(0)};
   for (int i = 1; i < sequence.num_steps(); ++i) {
     const std::string caption = render::step_caption(plan, i);
@@ -108,7 +108,7 @@ void write_video(const render::PlanView& plan, const render::SequenceOptions& op
                  std::ostream& out, std::ostream& err) {
   render::SequenceRenderer sequence(plan, options, meshes);
   render::VideoWriter video(files.video, options.width, options.height, {files.fps});
-  const int per_step = std::max(1, int(std::lround(files.fps * files.step_seconds)));
+  const int per_step = frames_per_step(files);
   const int last = sequence.num_steps() - 1;
   const int frames = last * per_step + 1 + int(std::lround(2.5 * files.fps));
   TimelinePoint drawn{-1, -1};

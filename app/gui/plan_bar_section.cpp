@@ -16,11 +16,6 @@ namespace {
 constexpr ImGuiWindowFlags kFixedWindow =
     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings;
 
-bool has_motion(const Plan& plan) {
-  return std::any_of(plan.steps.begin(), plan.steps.end(),
-                     [](const PlanStep& s) { return s.motion && !s.motion->samples.empty(); });
-}
-
 // ImGui prints the slider's format with printf: a literal label keeps no '%'.
 std::string literal_format(const std::string& text) {
   std::string out;

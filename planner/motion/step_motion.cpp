@@ -144,8 +144,6 @@ bool StepMotionPlanner::set_up(const PlanStep& a, const PlanStep& b, StepMotion*
     request_.contacts.push_back(std::move(task));
   }
   held_ = int(request_.contacts.size());
-  held_contacts_.clear();
-  for (int t = 0; t < held_; ++t) held_contacts_.push_back(request_.contacts[size_t(t)].contact);
   std::vector<SurfaceRef> surfaces;
   for (const PlanStep* step : {&a, &b})
     for (const PlanContact& pc : step->contacts) {
@@ -195,6 +193,8 @@ bool StepMotionPlanner::detour(const Eigen::VectorXd& q_from, const Eigen::Vecto
                                std::vector<MotionSample>* samples, size_t first,
                                StepMotion* motion) {
   const std::vector<MotionSample> chain(samples->begin() + long(first), samples->end());
+  std::vector<Contact> held;
+  for (int t = 0; t < held_; ++t) held.push_back(request_.contacts[size_t(t)].contact);
   const StanceProjector project = [&](const MotionSample& from, const Eigen::VectorXd& q_ref,
                                       MotionSample* out) {
     request_.contacts.resize(size_t(held_));  // the moving link free (E20 keeps it clear)
@@ -204,7 +204,7 @@ bool StepMotionPlanner::detour(const Eigen::VectorXd& q_from, const Eigen::Vecto
     *out = {std::move(r.q), std::move(r.forces), std::move(r.torques)};
     return true;
   };
-  StanceRrtResult found = StanceRrt(scene_, *spacing_, held_contacts_, options_.joint_spacing,
+  StanceRrtResult found = StanceRrt(scene_, *spacing_, held, options_.joint_spacing,
                                     options_.point_spacing, options_.detour)
                               .plan(q_from, chain, q_to, project);
   if (!found.found) {

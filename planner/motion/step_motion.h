@@ -95,10 +95,9 @@ class StepMotionPlanner {
   PostureSolver solver_;        // warm projections: few iterations, small fixed barrier
   PostureSolver retry_solver_;  // a sample solver_ fails: adaptive barrier, more iterations
   MotionOptions options_;
-  int held_ = 0;  // request_.contacts[0, held_): sigma, loaded, placements fixed
-  std::vector<Contact> held_contacts_;    // their contacts
-  PostureRequest request_;                // reused for every sample
-  Eigen::VectorXd q_ref_;                 // workspace of the interpolation
+  int held_ = 0;            // request_.contacts[0, held_): sigma, loaded, placements fixed
+  PostureRequest request_;  // reused for every sample
+  Eigen::VectorXd q_ref_;   // workspace of the interpolation
   std::optional<SampleSpacing> spacing_;  // surfaces of both steps' contacts
   int solves_ = 0;
   int bridge_depth_ = 0;

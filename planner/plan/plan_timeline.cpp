@@ -5,6 +5,11 @@
 
 namespace stanceplan {
 
+bool has_motion(const Plan& plan) {
+  return std::any_of(plan.steps.begin(), plan.steps.end(),
+                     [](const PlanStep& s) { return s.motion && !s.motion->samples.empty(); });
+}
+
 TimelinePoint timeline_point(const Plan& plan, double position) {
   const int last = static_cast<int>(plan.steps.size()) - 1;
   if (last <= 0 || !(position > 0.0)) return {0, -1};  // NaN lands on step 0 too

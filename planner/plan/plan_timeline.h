@@ -15,6 +15,9 @@ struct TimelinePoint {
   bool operator==(const TimelinePoint& o) const { return step == o.step && sample == o.sample; }
 };
 
+// Whether any step holds motion samples (else the timeline is the steps alone).
+bool has_motion(const Plan& plan);
+
 // The point at `position` (clamped to the timeline). The fraction f of the way from step i to i + 1
 // picks the nearest of the n + 2 evenly spaced points [step i, samples 0..n-1, step i + 1]. Without
 // samples into step i + 1 (no motion, or a failed one) step i is held until p reaches i + 1.

@@ -25,6 +25,11 @@ class Writer {
   void vec3(const Eigen::Vector3d& v) {
     for (int i = 0; i < 3; ++i) pod(v[i]);
   }
+  void contact(const Contact& c) {
+    for (int v : {c.s1.entity, c.s1.index, c.s2.entity, c.s2.index}) pod<int32_t>(v);
+    pod<uint8_t>(c.bilateral);
+    pod<uint8_t>(c.fixed);
+  }
   void placement(const std::optional<Placement>& p) {
     pod<uint8_t>(p.has_value());
     if (p) {
@@ -65,6 +70,16 @@ class Reader {
     for (int i = 0; i < 3; ++i) v[i] = pod<double>();
     return v;
   }
+  Contact contact() {
+    Contact c;
+    c.s1.entity = pod<int32_t>();
+    c.s1.index = pod<int32_t>();
+    c.s2.entity = pod<int32_t>();
+    c.s2.index = pod<int32_t>();
+    c.bilateral = pod<uint8_t>();
+    c.fixed = pod<uint8_t>();
+    return c;
+  }
   std::optional<Placement> placement() {
     if (!pod<uint8_t>()) return std::nullopt;
     Placement p;
@@ -85,10 +100,7 @@ std::string serialize(const PostureRequest& request) {
   Writer w;
   w.pod<uint64_t>(request.contacts.size());
   for (const ContactTask& t : request.contacts) {
-    for (int v : {t.contact.s1.entity, t.contact.s1.index, t.contact.s2.entity, t.contact.s2.index})
-      w.pod<int32_t>(v);
-    w.pod<uint8_t>(t.contact.bilateral);
-    w.pod<uint8_t>(t.contact.fixed);
+    w.contact(t.contact);
     w.pod<uint8_t>(t.loaded);
     w.placement(t.placement);
     w.placement(t.placement_target);
@@ -100,11 +112,7 @@ std::string serialize(const PostureRequest& request) {
   w.vector(request.q_ref);
   w.pod<int32_t>(request.progress_budget);
   w.pod<uint64_t>(request.approaching.size());
-  for (const Contact& c : request.approaching) {
-    for (int v : {c.s1.entity, c.s1.index, c.s2.entity, c.s2.index}) w.pod<int32_t>(v);
-    w.pod<uint8_t>(c.bilateral);
-    w.pod<uint8_t>(c.fixed);
-  }
+  for (const Contact& c : request.approaching) w.contact(c);
   return w.bytes;
 }
 
@@ -114,12 +122,7 @@ PostureRequest deserialize_request(const std::string& bytes) {
   const auto n = r.pod<uint64_t>();
   for (uint64_t i = 0; i < n; ++i) {
     ContactTask t;
-    t.contact.s1.entity = r.pod<int32_t>();
-    t.contact.s1.index = r.pod<int32_t>();
-    t.contact.s2.entity = r.pod<int32_t>();
-    t.contact.s2.index = r.pod<int32_t>();
-    t.contact.bilateral = r.pod<uint8_t>();
-    t.contact.fixed = r.pod<uint8_t>();
+    t.contact = r.contact();
     t.loaded = r.pod<uint8_t>();
     t.placement = r.placement();
     t.placement_target = r.placement();
@@ -132,16 +135,7 @@ PostureRequest deserialize_request(const std::string& bytes) {
   request.q_ref = r.vector();
   request.progress_budget = r.pod<int32_t>();
   const auto approaching = r.pod<uint64_t>();
-  for (uint64_t i = 0; i < approaching; ++i) {
-    Contact c;
-    c.s1.entity = r.pod<int32_t>();
-    c.s1.index = r.pod<int32_t>();
-    c.s2.entity = r.pod<int32_t>();
-    c.s2.index = r.pod<int32_t>();
-    c.bilateral = r.pod<uint8_t>();
-    c.fixed = r.pod<uint8_t>();
-    request.approaching.push_back(c);
-  }
+  for (uint64_t i = 0; i < approaching; ++i) request.approaching.push_back(r.contact());
   return request;
 }
 

@@ -18,6 +18,14 @@ Plan plan_with_samples(int samples) {
   return plan;
 }
 
+TEST(PlanTimeline, APlanHasMotionWhenAStepHoldsSamples) {
+  EXPECT_TRUE(has_motion(plan_with_samples(3)));
+  EXPECT_FALSE(has_motion(plan_with_samples(0)));  // a motion without samples (a failed one)
+  Plan steps_only;
+  steps_only.steps.resize(3);
+  EXPECT_FALSE(has_motion(steps_only));
+}
+
 TEST(PlanTimeline, StepsSitAtWholePositions) {
   const Plan plan = plan_with_samples(3);
   EXPECT_EQ(timeline_point(plan, 0.0), (TimelinePoint{0, -1}));
