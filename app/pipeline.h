@@ -15,6 +15,7 @@
 #include "planner/io/plan_reader.h"
 #include "planner/io/scenario.h"
 #include "planner/motion/motion_options.h"
+#include "planner/motion/step_motion.h"
 #include "planner/search/stance_search.h"
 #include "render/figures/plan_view.h"
 #include "render/figures/sequence.h"
@@ -95,6 +96,10 @@ void write_guide_strip(const Scenario& scenario, const ComputedGuide& guide,
 // A step whose motion fails keeps none, with a warning on `err` naming it and why: false then.
 bool add_plan_motion(const Scene& scene, const SolverOptions& solver, const MotionOptions& options,
                      Plan& plan, std::ostream& out, std::ostream& err);
+// The motion's line for a search that checked its transitions (PlanSession with motion): every
+// check's figures (the dropped transitions' too), the samples of the plan found.
+void print_motion_checks(const std::vector<StepMotionResult>& checks, const SearchResult& result,
+                         std::ostream& out);
 
 // --- figures (pipeline_figures.cpp)
 // The figures' view of a plan read from its file (named after its scenario file, else itself) or

@@ -10,24 +10,41 @@
 
 namespace stanceplan::app {
 
-bool add_plan_motion(const Scene& scene, const SolverOptions& solver, const MotionOptions& options,
-                     Plan& plan, std::ostream& out, std::ostream& err) {
-  const PlanMotionSummary summary = add_motion(scene, solver, options, plan);
+namespace {
+
+// "N steps, S samples, K solves; per step median M ms, p95 P ms" over `results`.
+void print_motion_figures(const std::vector<StepMotionResult>& results, size_t samples,
+                          std::ostream& out) {
   std::vector<double> times;
-  size_t samples = 0;
   int solves = 0;
-  for (size_t i = 0; i < summary.steps.size(); ++i) {
-    times.push_back(summary.steps[i].time_ms);
-    solves += summary.steps[i].solves;
-    if (plan.steps[i + 1].motion) samples += plan.steps[i + 1].motion->samples.size();
+  for (const StepMotionResult& r : results) {
+    times.push_back(r.time_ms);
+    solves += r.solves;
   }
   std::sort(times.begin(), times.end());
   const auto at = [&](double fraction) {
     return times.empty() ? 0.0 : times[size_t(fraction * double(times.size() - 1) + 0.5)];
   };
-  out << "motion: " << summary.steps.size() << " steps, " << samples << " samples, " << solves
+  out << results.size() << " steps, " << samples << " samples, " << solves
       << " solves; per step median " << std::fixed << std::setprecision(1) << at(0.5) << " ms, p95 "
-      << at(0.95) << " ms\n";
+      << at(0.95) << " ms";
+}
+
+size_t motion_samples(const Plan& plan) {
+  size_t samples = 0;
+  for (const PlanStep& step : plan.steps)
+    if (step.motion) samples += step.motion->samples.size();
+  return samples;
+}
+
+}  // namespace
+
+bool add_plan_motion(const Scene& scene, const SolverOptions& solver, const MotionOptions& options,
+                     Plan& plan, std::ostream& out, std::ostream& err) {
+  const PlanMotionSummary summary = add_motion(scene, solver, options, plan);
+  out << "motion: ";
+  print_motion_figures(summary.steps, motion_samples(plan), out);
+  out << "\n";
   // A step whose motion failed keeps none: the plan stays certified, the GIF jumps there.
   for (size_t i = 1; i < plan.steps.size(); ++i) {
     std::optional<StepMotion>& motion = plan.steps[i].motion;
@@ -37,6 +54,15 @@ bool add_plan_motion(const Scene& scene, const SolverOptions& solver, const Moti
     motion.reset();
   }
   return summary.solved();
+}
+
+void print_motion_checks(const std::vector<StepMotionResult>& checks, const SearchResult& result,
+                         std::ostream& out) {
+  out << "motion: ";
+  print_motion_figures(checks, motion_samples(result.plan), out);
+  out << "; checked during the search, " << result.transitions_dropped
+      << " transitions without a motion dropped, " << std::setprecision(2) << result.check_time_s
+      << " s\n";
 }
 
 }  // namespace stanceplan::app

@@ -111,6 +111,7 @@ std::function<void(const SearchEvent&)> event_reporter(const Scenario& scenario,
             << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " ("
             << std::fixed << std::setprecision(1) << e.time_ms << " ms, " << e.iterations
             << " iterations)";
+      if (e.kind == SearchEventKind::MotionFailed) err << ": " << e.message;
       err << "\n";
     } else if (live) {
       err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones
@@ -203,7 +204,11 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
     err << "stanceplan: no plan: " << guide->message << "\n";
     return planned;
   }
-  PlanSession session(scenario, search_options_with_overrides(scenario, options));
+  // With motion, the search checks each transition of the plan it finds (lazy validation): the
+  // plan comes with its motion, and a transition without one was replaced.
+  PlanSession session(
+      scenario, search_options_with_overrides(scenario, options),
+      options.motion ? std::optional<MotionOptions>(MotionOptions{}) : std::nullopt);
   std::optional<SnapshotWriter> snapshots;
   if (!options.snapshots.empty())
     snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});
@@ -212,10 +217,7 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   const SearchResult& result = *planned.result;
   if (options.stats) print_search_stats(result, events, out);
   const bool found = result.status == PlanStatus::Found;
-  // A step whose motion fails keeps none (a warning says so): the plan is still written.
-  if (found && options.motion)
-    add_plan_motion(scenario.scene, scenario.solver, MotionOptions{}, planned.result->plan, out,
-                    err);
+  if (options.motion && found) print_motion_checks(session.motion_checks(), result, out);
   const int written =
       found ? write_certified_plan(result.plan, scenario, options.out, options.partial, err)
             : kExitFailed;

@@ -1,7 +1,9 @@
 // The motion between steps (planner/motion/) on the plans of the scenario files: each scenario is
-// planned once (2 threads, not timed), then the motion of the whole plan is computed, one thread,
-// and timed per step. Counters: steps, steps_failed, samples, solves per step, and the motion time
-// per step, median and p95 (ms; target <= 100 ms on the 2-core machine). Run:
+// planned once as `plan --motion` plans it (2 threads, its transitions' motion checked by the
+// search, which drops those without: not timed), then the motion of the whole plan is computed
+// again, one thread, and timed per step. Counters: steps, steps_failed, transitions_dropped (by
+// the search), samples, solves per step, and the motion time per step, median and p95 (ms; target
+// <= 100 ms on the 2-core machine). Run:
 //   build/bench/motion_bench --benchmark_filter=walk
 #include <benchmark/benchmark.h>
 
@@ -11,6 +13,7 @@
 
 #include "bench/scenario_list.h"
 #include "planner/io/scenario.h"
+#include "planner/motion/motion_transition_check.h"
 #include "planner/motion/plan_motion.h"
 #include "planner/search/stance_search.h"
 #include "planner/util/heap_tuning.h"
@@ -29,7 +32,10 @@ void plan_motion(benchmark::State& state, const std::string& name) {
   const Scenario scenario = load_scenario(bench::scenario_path(name));
   SearchOptions options = scenario.search;
   options.threads = 2;
-  const SearchResult result = StanceSearch(scenario, options).run();
+  MotionTransitionCheck check(scenario.scene, scenario.solver, MotionOptions{});
+  StanceSearch search(scenario, options);
+  search.set_transition_check(check.as_check());
+  const SearchResult result = search.run();
   if (result.status != PlanStatus::Found) {
     state.SkipWithError(("no plan: " + result.message).c_str());
     return;
@@ -51,6 +57,7 @@ void plan_motion(benchmark::State& state, const std::string& name) {
   const double steps = std::max<size_t>(summary.steps.size(), 1);
   state.counters["steps"] = double(summary.steps.size());
   state.counters["steps_failed"] = summary.failed_steps;
+  state.counters["transitions_dropped"] = result.transitions_dropped;
   state.counters["samples"] = samples;
   state.counters["solves_per_step"] = solves / steps;
   state.counters["median_ms"] = percentile(times, 0.5);

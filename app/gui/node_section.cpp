@@ -142,6 +142,8 @@ std::string event_action(const Scene& scene, const SearchEvent& e) {
       return "goal reached";
     case SearchEventKind::Failure:
       return "no plan";
+    case SearchEventKind::MotionFailed:
+      return "no motion into node " + std::to_string(e.node);
     case SearchEventKind::Candidate:
       return "initial stance";
   }

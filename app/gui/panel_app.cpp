@@ -112,8 +112,10 @@ PanelApp::PanelApp(const Scenario& scenario, const PanelOptions& options,
                    std::vector<ScriptAction> script)
     : scenario_(scenario),
       options_(options),
-      session_(std::make_unique<PlanSession>(scenario,
-                                             search_options_with_overrides(scenario, options))),
+      // With motion, the search checks the motion of the plan it finds (lazy validation).
+      session_(std::make_unique<PlanSession>(
+          scenario, search_options_with_overrides(scenario, options),
+          options.motion ? std::optional<MotionOptions>(MotionOptions{}) : std::nullopt)),
       window_(options.width, options.height, "stanceplan \u2014 " + scenario.name),
       meshes_(std::make_shared<render::MeshLibrary>()),
       style_(live_style(scenario)),

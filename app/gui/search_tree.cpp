@@ -10,6 +10,8 @@ const char* to_string(NodeStatus status) {
       return "goal";
     case NodeStatus::PlanPath:
       return "on the plan";
+    case NodeStatus::NoMotion:
+      return "no motion";
     case NodeStatus::Milestone:
       return "reached a milestone";
     case NodeStatus::Expanded:
@@ -51,7 +53,15 @@ void SearchTree::add(const SearchEvent& event, size_t index) {
     case SearchEventKind::Failure:
       closest_ = event.node;
       break;
+    case SearchEventKind::MotionFailed:
+      if (node(event.node) != nullptr) drop(event.node);
+      break;
   }
+}
+
+void SearchTree::drop(int id) {
+  nodes_[id].dropped = true;
+  for (int child : nodes_[id].children) drop(child);
 }
 
 const TreeNode* SearchTree::node(int id) const {
@@ -62,6 +72,7 @@ NodeStatus SearchTree::status(int id) const {
   const TreeNode& n = nodes_.at(id);
   if (id == goal_) return NodeStatus::Goal;
   if (n.on_plan) return NodeStatus::PlanPath;
+  if (n.dropped) return NodeStatus::NoMotion;
   if (n.milestone >= 0) return NodeStatus::Milestone;
   if (n.expansions > 0) return NodeStatus::Expanded;
   return NodeStatus::Open;

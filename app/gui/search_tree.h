@@ -11,7 +11,8 @@
 namespace stanceplan::gui {
 
 // What a node's colour says, from the most to the least specific.
-enum class NodeStatus { Goal, PlanPath, Milestone, Expanded, Open };
+// NoMotion: the transition that made the node (or an ancestor's) has no motion (MotionFailed).
+enum class NodeStatus { Goal, PlanPath, NoMotion, Milestone, Expanded, Open };
 const char* to_string(NodeStatus status);
 
 struct TreeNode {
@@ -24,6 +25,7 @@ struct TreeNode {
   int expansions = 0;            // times popped from the open queue (0 or 1; retries re-expand)
   int milestone = -1;            // highest milestone index this node made the search reach
   bool on_plan = false;
+  bool dropped = false;  // no motion into it or into an ancestor (SearchNode::dropped)
 };
 
 class SearchTree {
@@ -40,6 +42,7 @@ class SearchTree {
   std::vector<int> plan_path() const;
 
  private:
+  void drop(int id);  // the node and its subtree
   std::vector<TreeNode> nodes_;
   int goal_ = -1;
   int closest_ = -1;

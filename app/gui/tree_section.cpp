@@ -263,8 +263,8 @@ const char* legend_name(NodeStatus status) {
 
 // The colours' meaning as coloured words, wrapped to the column's width: one line where it fits.
 void draw_legend() {
-  const NodeStatus order[] = {NodeStatus::Open, NodeStatus::Expanded, NodeStatus::Milestone,
-                              NodeStatus::PlanPath, NodeStatus::Goal};
+  const NodeStatus order[] = {NodeStatus::Open,     NodeStatus::Expanded, NodeStatus::Milestone,
+                              NodeStatus::PlanPath, NodeStatus::Goal,     NodeStatus::NoMotion};
   const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
   const auto word = [&](const char* text, ImVec4 color, bool first) {
     const float spacing = 9.0f;

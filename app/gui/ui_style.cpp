@@ -57,6 +57,8 @@ ImVec4 status_color(NodeStatus status) {
       return ImVec4(1.00f, 0.80f, 0.25f, 1.0f);
     case NodeStatus::PlanPath:
       return loaded_color();
+    case NodeStatus::NoMotion:
+      return ImVec4(0.95f, 0.45f, 0.30f, 1.0f);
     case NodeStatus::Milestone:
       return ImVec4(0.72f, 0.58f, 1.00f, 1.0f);
     case NodeStatus::Expanded:

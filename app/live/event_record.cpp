@@ -52,6 +52,8 @@ std::string outcome(const SearchEvent& e, int milestones) {
              std::to_string(e.nodes) + " nodes";
     case SearchEventKind::Failure:
       return "no plan: " + e.message;
+    case SearchEventKind::MotionFailed:
+      return "node " + std::to_string(e.node) + " dropped: " + e.message;
   }
   return "";
 }

@@ -49,6 +49,11 @@ void MotionSession::run() {
   StepMotionPlanner planner(scene_, solver_, options_);
   const size_t steps = plan_.steps.size();
   for (size_t i = 1; i < steps && !cancelled_.load(); ++i) {
+    if (plan_.steps[i].motion && plan_.steps[i].motion->status == MotionStatus::Solved) {
+      std::lock_guard<std::mutex> lock(mutex_);  // checked by the search (PlanSession's motion)
+      progress_.steps_done = static_cast<int>(i);
+      continue;
+    }
     StepMotionResult result = planner.plan(plan_.steps[i - 1], plan_.steps[i]);
     const bool solved = result.motion.status == MotionStatus::Solved;
     {

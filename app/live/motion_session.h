@@ -3,7 +3,8 @@
 // at a time, for a consumer that shows each step's motion as soon as it exists (the panel's
 // timeline). Same threading rules as PlanSession: the consumer copies under the lock, the worker
 // never waits on it. A step whose motion fails keeps none (its failure is recorded): the plan
-// stays one `certify` accepts, and the timeline holds the step there as before.
+// stays one `certify` accepts, and the timeline holds the step there as before. A step that
+// already has a solved motion (the search checked it: PlanSession with motion) keeps it.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>

@@ -5,9 +5,11 @@
 
 namespace stanceplan::app {
 
-PlanSession::PlanSession(const Scenario& scenario, SearchOptions options)
+PlanSession::PlanSession(const Scenario& scenario, SearchOptions options,
+                         std::optional<MotionOptions> motion)
     : scenario_(scenario),
       options_(std::move(options)),
+      motion_(std::move(motion)),
       pool_solver_(scenario.scene, scenario.solver),
       pool_(pool_solver_, solver_processes(options_)),
       search_(make_search()) {}
@@ -17,6 +19,11 @@ std::unique_ptr<StanceSearch> PlanSession::make_search() {
   search->set_solver_pool(&pool_);
   search->set_gate(&gate_);
   search->set_observer([this](const SearchEvent& e) { record(e); });
+  if (motion_) {  // a fresh check per run: motion_checks() is the current run's
+    motion_check_ =
+        std::make_unique<MotionTransitionCheck>(scenario_.scene, scenario_.solver, *motion_);
+    search->set_transition_check(motion_check_->as_check());
+  }
   return search;
 }
 
@@ -90,6 +97,11 @@ bool PlanSession::wait_until_finished(std::chrono::milliseconds timeout) const {
 std::optional<SearchResult> PlanSession::result() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return result_;
+}
+
+std::vector<StepMotionResult> PlanSession::motion_checks() const {
+  if (!finished()) throw std::logic_error("PlanSession::motion_checks: the search is running");
+  return motion_check_ ? motion_check_->checked() : std::vector<StepMotionResult>{};
 }
 
 std::exception_ptr PlanSession::error() const {

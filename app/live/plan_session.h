@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "planner/io/scenario.h"
+#include "planner/motion/motion_transition_check.h"
 #include "planner/search/search_events.h"
 #include "planner/search/stance_search.h"
 #include "planner/solver/posture_solver.h"
@@ -23,8 +24,11 @@ namespace stanceplan::app {
 class PlanSession {
  public:
   // Makes the solver worker processes at once, on the calling thread (before the caller starts
-  // other threads: solver_pool.h); the scenario outlives the session.
-  PlanSession(const Scenario& scenario, SearchOptions options);
+  // other threads: solver_pool.h); the scenario outlives the session. With `motion`, the search
+  // checks the motion of each transition of a plan it finds (lazy validation, stance_search.h):
+  // a plan found carries its motion, and a transition without one is dropped.
+  PlanSession(const Scenario& scenario, SearchOptions options,
+              std::optional<MotionOptions> motion = std::nullopt);
   ~PlanSession();  // cancels and joins
   PlanSession(const PlanSession&) = delete;
   PlanSession& operator=(const PlanSession&) = delete;
@@ -53,6 +57,9 @@ class PlanSession {
   // stays empty. Null otherwise.
   std::exception_ptr error() const;
   const Scenario& scenario() const { return scenario_; }
+  // The transitions the current run checked (their figures; empty without `motion`). Read once
+  // finished() only: the search thread appends to it.
+  std::vector<StepMotionResult> motion_checks() const;
 
  private:
   void record(const SearchEvent& event);
@@ -61,7 +68,9 @@ class PlanSession {
 
   const Scenario& scenario_;
   const SearchOptions options_;
-  PostureSolver pool_solver_;  // the solver the worker processes copy
+  const std::optional<MotionOptions> motion_;
+  std::unique_ptr<MotionTransitionCheck> motion_check_;  // made with each search
+  PostureSolver pool_solver_;                            // the solver the worker processes copy
   SolverPool pool_;
   std::unique_ptr<StanceSearch> search_;
   StepGate gate_;

@@ -15,7 +15,9 @@
 
 namespace stanceplan {
 
-enum class SearchEventKind { Expansion, Candidate, Milestone, PlanFound, Failure };
+// MotionFailed: a transition of a plan found has no motion (lazy validation, stance_search.h);
+// its node (and subtree) is dropped and the search goes on.
+enum class SearchEventKind { Expansion, Candidate, Milestone, PlanFound, Failure, MotionFailed };
 const char* to_string(SearchEventKind kind);
 
 enum class CandidateCase { None, Add, Remove };  // docs/METHOD.md case 1 / case 2
@@ -29,8 +31,8 @@ struct SearchEvent {
   CandidateCase candidate_case = CandidateCase::None;
   Contact changed;                               // candidates: the contact added or removed
   PostureStatus status = PostureStatus::Solved;  // candidates
-  std::string message;                           // candidates: why rejected; failure: why
-  bool accepted = false;                         // candidates: a new node was made
+  std::string message;                // candidates: why rejected; failure, motion failed: why
+  bool accepted = false;              // candidates: a new node was made
   Eigen::VectorXd q;                  // the configuration (candidates: the solver's final iterate)
   std::vector<PlanContact> contacts;  // touched at q, with which carry force
   std::vector<VertexForce> forces;    // VertexForce::contact indexes `contacts`

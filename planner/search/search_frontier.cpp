@@ -63,11 +63,13 @@ bool StanceSearch::Run::is_goal(const SearchNode& node) const {
   return true;
 }
 
-// Loop avoidance: the same stance at the same placements is already a node.
-bool StanceSearch::Run::already_in_tree(const Stance& stance,
-                                        const std::vector<Placement>& placements) const {
+// Loop avoidance: the same stance at the same placements is already a node. A dropped node (its
+// transition has no motion) only blocks the same transition, from the same parent: reached from
+// another node, the stance is a new transition, which may have a motion.
+bool StanceSearch::Run::already_in_tree(const SearchNode& node) const {
+  const std::vector<Placement>& placements = node.placements;
   for (const SearchNode& n : tree_) {
-    if (!(n.stance() == stance)) continue;
+    if (!(n.stance() == node.stance()) || (n.dropped && n.parent != node.parent)) continue;
     bool same = true;
     for (size_t i = 0; i < placements.size() && same; ++i)
       same = same_placement(n.placements[i], placements[i], options_);
@@ -84,7 +86,7 @@ int StanceSearch::Run::closest() const {
     return std::make_pair(stance_difference(x.stance(), goal_), cost(x));
   };
   for (const SearchNode& n : tree_)
-    if (key(n) < key(tree_[size_t(best)])) best = n.id;
+    if (!n.dropped && key(n) < key(tree_[size_t(best)])) best = n.id;
   return best;
 }
 
@@ -94,7 +96,7 @@ void StanceSearch::Run::advance_milestones() {
   while (advanced && t_ + 1 < guide_.size()) {
     advanced = false;
     for (const SearchNode& n : tree_)
-      if (guide_.distance_to(n.q(), t_) <= milestone_tolerance(t_)) {
+      if (!n.dropped && guide_.distance_to(n.q(), t_) <= milestone_tolerance(t_)) {
         ++t_;
         advanced = true;
         if (!search_.publish(node_event(SearchEventKind::Milestone, n, t_, int(tree_.size()))))

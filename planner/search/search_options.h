@@ -8,8 +8,10 @@
 namespace stanceplan {
 
 struct SearchOptions {
-  int max_nodes = 2000;               // nodes expanded before giving up
-  double time_limit_s = 60.0;         // wall-clock budget
+  int max_nodes = 2000;  // nodes expanded before giving up
+  // Wall-clock budget of the search: neither the time the step gate holds it nor the transition
+  // checks' (stance_search.h) count.
+  double time_limit_s = 60.0;
   double milestone_tolerance = 0.15;  // distance at which a milestone counts as reached
   int threads = 0;                    // candidate solves in parallel; 0 = the number of cores
   // Pruning (candidates.h): surfaces farther apart than this are not offered as a new contact;

@@ -156,6 +156,7 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
     const PostureResult& r = results[i];
     ++result_.solver_calls;
     result_.solver_time_s += r.time_ms / 1000.0;
+    if (tree_[size_t(a.node)].dropped) continue;  // a plan through it was found and had no motion
     const Stance& from = tree_[size_t(a.node)].stance();
     const Stance next = a.candidate.add ? from.with(a.candidate.contact)
                                         : from.without(from.find(a.candidate.contact));
@@ -165,7 +166,8 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
       SearchNode child = make_node(a.node, requests[i], r, next, a.candidate.add ? "add" : "remove",
                                    a.candidate.contact);
       child.milestone = t_;
-      if (already_in_tree(child.stance(), child.placements)) {
+      child.attempt = a.attempt;
+      if (already_in_tree(child)) {
         e.message = "already in the tree";
       } else {
         e.accepted = true;
@@ -184,8 +186,9 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
     e.milestone = t_;
     e.nodes = int(tree_.size());
     if (!search_.publish(e)) return give_up(PlanStatus::Cancelled, "cancelled");
-    if (e.accepted) {
-      if (is_goal(tree_[size_t(e.node)])) return found(e.node);
+    if (e.accepted && is_goal(tree_[size_t(e.node)])) {
+      if (auto end = reach_goal(e.node)) return end;
+    } else if (e.accepted) {
       advance_milestones();
     }
   }
@@ -199,6 +202,61 @@ void StanceSearch::Run::remember_failure(const Attempt& a) {
   const SearchNode& node = tree_[size_t(a.node)];
   const auto data = system_kinematics(problem_.scene.system, node.q());
   failures_.record(problem_.scene, data, node.q(), node.stance(), a.candidate);
+}
+
+std::optional<SearchResult> StanceSearch::Run::reach_goal(int goal) {
+  if (!search_.check_) return found(goal);
+  std::vector<int> path;
+  for (int n = goal; n > 0; n = tree_[size_t(n)].parent) path.push_back(n);
+  for (auto n = path.rbegin(); n != path.rend(); ++n) {
+    SearchNode& node = tree_[size_t(*n)];
+    if (node.step.motion) continue;  // checked when an earlier plan went through it
+    if (search_.stopped()) return give_up(PlanStatus::Cancelled, "cancelled");
+    const auto started = Clock::now();
+    StepMotion motion = search_.check_(tree_[size_t(node.parent)].step, node.step);
+    result_.check_time_s += std::chrono::duration<double>(Clock::now() - started).count();
+    ++result_.transitions_checked;
+    if (motion.status != MotionStatus::Solved) {
+      ++result_.transitions_dropped;
+      if (!drop(*n, motion.message)) return give_up(PlanStatus::Cancelled, "cancelled");
+      return std::nullopt;
+    }
+    node.step.motion = std::move(motion);
+  }
+  return found(goal);
+}
+
+bool StanceSearch::Run::drop(int n, const std::string& why) {
+  tree_[size_t(n)].dropped = true;
+  for (SearchNode& node : tree_)  // children come after their parent
+    if (node.parent >= 0 && tree_[size_t(node.parent)].dropped) node.dropped = true;
+  const auto dropped = [&](int k) { return tree_[size_t(k)].dropped; };
+  open_.erase(std::remove_if(open_.begin(), open_.end(), dropped), open_.end());
+  for (std::deque<Attempt>* queue : {&urgent_, &retries_})
+    queue->erase(std::remove_if(queue->begin(), queue->end(),
+                                [&](const Attempt& a) { return dropped(a.node); }),
+                 queue->end());
+  for (int k = 0; k < int(tree_.size()); ++k) {
+    if (!dropped(k)) continue;
+    if (k < int(pending_.size())) pending_[size_t(k)].clear();
+    if (k < int(expanded_for_.size())) expanded_for_[size_t(k)] = -1;  // never reopened
+  }
+  retry_dropped(n);
+  SearchEvent e =
+      node_event(SearchEventKind::MotionFailed, tree_[size_t(n)], t_, int(tree_.size()));
+  e.parent = tree_[size_t(n)].parent;
+  e.message = "no motion from node " + std::to_string(e.parent) + ": " + why;
+  return search_.publish(std::move(e));
+}
+
+// The candidate that made a dropped node, tried again at once from its parent from the next
+// initial guess: an addition then aims at a shorter step (request_for), often one the moving link
+// can reach (a foot set down nearer where it hangs).
+void StanceSearch::Run::retry_dropped(int n) {
+  const SearchNode& node = tree_[size_t(n)];
+  if (node.attempt >= options_.max_retries || !node.step.changed) return;
+  const Candidate candidate{node.step.action == "add", *node.step.changed};
+  urgent_.push_front({node.parent, candidate, node.attempt + 1, 0.0});
 }
 
 SearchResult StanceSearch::Run::finish(PlanStatus status, std::string message) {
@@ -242,8 +300,9 @@ double StanceSearch::Run::held_time() const {
   return std::chrono::duration<double>(search_.held_).count();
 }
 
+// The transition checks are the motion planner's time, bounded by its own budgets (MotionOptions).
 double StanceSearch::Run::running_time() const {
-  return elapsed() - held_time();
+  return elapsed() - held_time() - result_.check_time_s;
 }
 
 // " (and 42.5 s held by the step gate)", or "" when the gate never held the search.

@@ -53,12 +53,20 @@ class StanceSearch::Run {
                                            const std::vector<PostureRequest>& requests,
                                            const std::vector<PostureResult>& results);
   void remember_failure(const Attempt& attempt);
+  // The goal reached at `goal`: the plan, once every transition on its path has passed the
+  // transition check (lazy validation, stance_search.h); nullopt when one failed (its node was
+  // dropped) and the search goes on.
+  std::optional<SearchResult> reach_goal(int goal);
+  // Drops node n and its subtree (its transition has no motion: `why`) from the frontier, the
+  // pending candidates and the retries; publishes MotionFailed. False when cancelled at the event.
+  bool drop(int n, const std::string& why);
+  void retry_dropped(int n);
   SearchResult finish(PlanStatus status, std::string message);
   SearchResult give_up(PlanStatus status, std::string message);
   SearchResult found(int goal_node);
   double elapsed() const;       // wall time since the run started
   double held_time() const;     // of it, held by the step gate
-  double running_time() const;  // the rest: what the time budget counts
+  double running_time() const;  // less the transition checks': what the time budget counts
   std::string held_note() const;
 
   // --- the tree and its frontier (search_frontier.cpp)
@@ -68,7 +76,7 @@ class StanceSearch::Run {
   double milestone_tolerance(int m) const;
   double cost(const SearchNode& node) const;
   bool is_goal(const SearchNode& node) const;
-  bool already_in_tree(const Stance& stance, const std::vector<Placement>& placements) const;
+  bool already_in_tree(const SearchNode& node) const;
   int closest() const;
   void advance_milestones();
   // A node's rank in the open list: its cost, plus, once it is expanded for the targeted

@@ -5,6 +5,15 @@
 // remove one: case 2) is checked by the IK-statics solver; the cost is the distance to the targeted
 // milestone of the guide path. Adds loop avoidance, backtracking, budgets, cancellation, events and
 // a step gate. Deterministic: the plan does not depend on the thread count.
+//
+// With a transition check (set_transition_check: the motion between two steps, planner/motion/),
+// a plan is validated lazily before it is returned, as Lazy PRM validates a path's edges (Bohlin &
+// Kavraki, "Path Planning Using Lazy PRM", ICRA 2000): the transitions from the root to the goal
+// are checked in order, each once (a node keeps its motion); the first without a motion drops its
+// node and the node's subtree (SearchNode::dropped, a MotionFailed event), and the search goes on
+// from its frontier, first with the dropped node's candidate from its parent's next initial guess.
+// A dropped node still counts for loop avoidance from its parent, so the same transition is not
+// made again; reached from another node, its stance is a new transition.
 #include <atomic>
 #include <chrono>
 #include <string>
@@ -12,6 +21,7 @@
 
 #include "planner/plan/plan.h"
 #include "planner/plan/problem.h"
+#include "planner/plan/transition_check.h"
 #include "planner/search/guide_path.h"
 #include "planner/search/search_events.h"
 #include "planner/search/search_options.h"
@@ -28,6 +38,9 @@ struct SearchNode {
   int milestone = 0;                  // the milestone targeted when the node was made
   std::vector<Placement> placements;  // per stance contact, realised at step.q
   PlanStep step;                      // the transition that made it (its stance, q, forces, ...)
+  int attempt = 0;  // which attempt of its candidate made it (0: from the parent's configuration)
+  // Its transition from the parent (or an ancestor's) has no motion: never part of a plan.
+  bool dropped = false;
   const Stance& stance() const { return step.stance; }
   const Eigen::VectorXd& q() const { return step.q; }
 };
@@ -46,6 +59,11 @@ struct SearchResult {
   // observer): it does not count against SearchOptions::time_limit_s.
   double held_time_s = 0.0;
   double solver_time_s = 0.0;  // summed over solves
+  // The transition check (lazy validation): transitions checked, those without a motion, and the
+  // wall time the checks took (part of wall_time_s, not counted by SearchOptions::time_limit_s).
+  int transitions_checked = 0;
+  int transitions_dropped = 0;
+  double check_time_s = 0.0;
 };
 
 class SolverPool;
@@ -64,6 +82,8 @@ class StanceSearch {
   // alive for the run. None: the run makes its own when it starts.
   void set_solver_pool(SolverPool* pool) { pool_ = pool; }
   void set_gate(StepGate* gate) { gate_ = gate; }
+  // Lazy validation of the plan found (above); none: the plan's transitions are not checked.
+  void set_transition_check(TransitionCheck check) { check_ = std::move(check); }
   // Thread-safe: the search stops before its next solver call.
   void cancel() { cancelled_ = true; }
 
@@ -80,6 +100,7 @@ class StanceSearch {
   SearchObserver observer_;
   StepGate* gate_ = nullptr;
   SolverPool* pool_ = nullptr;
+  TransitionCheck check_;
   std::chrono::steady_clock::duration held_{};  // in the gate; written by the search thread only
   std::atomic<bool> cancelled_{false};
   int next_event_ = 0;

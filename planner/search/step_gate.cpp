@@ -14,6 +14,8 @@ const char* to_string(SearchEventKind kind) {
       return "plan_found";
     case SearchEventKind::Failure:
       return "failure";
+    case SearchEventKind::MotionFailed:
+      return "motion_failed";
   }
   return "?";
 }

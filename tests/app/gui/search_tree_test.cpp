@@ -56,6 +56,24 @@ TEST(SearchTree, ColoursNodesByStatus) {
   EXPECT_EQ(tree.plan_path(), (std::vector<int>{0, 1, 3}));
 }
 
+// A transition without a motion (lazy validation): its node and its subtree show it; the plan
+// found afterwards goes through the other branch.
+TEST(SearchTree, ANodeWithoutMotionAndItsSubtreeAreMarked) {
+  SearchTree tree;
+  auto events = story();
+  events.pop_back();  // the plan through 1 is not found: its transition into 1 has no motion
+  events.push_back(of_kind(SearchEventKind::MotionFailed, 1));
+  events.push_back(candidate(2, 4, true));
+  events.push_back(of_kind(SearchEventKind::PlanFound, 4));
+  for (size_t i = 0; i < events.size(); ++i) tree.add(events[i], i);
+  EXPECT_EQ(tree.status(1), NodeStatus::NoMotion);
+  EXPECT_EQ(tree.status(3), NodeStatus::NoMotion);
+  EXPECT_EQ(tree.status(4), NodeStatus::Goal);
+  EXPECT_EQ(tree.status(2), NodeStatus::PlanPath);
+  EXPECT_EQ(tree.plan_path(), (std::vector<int>{0, 2, 4}));
+  EXPECT_STREQ(to_string(NodeStatus::NoMotion), "no motion");
+}
+
 TEST(SearchTree, AFailureNamesTheClosestNode) {
   SearchTree tree;
   tree.add(candidate(-1, 0, true), 0);
