@@ -125,7 +125,8 @@ void add_guide(CLI::App& cli, GuideCommandOptions& options) {
   cmd->add_option("--out", options.out, "file to write (default: standard output)");
   cmd->add_option("--strip", options.strip, "draw the milestones as a figure strip (PNG)");
   cmd->add_option("--seed", options.seed, "seed (default: search.guide_seed, else 1)");
-  cmd->add_flag("--stats", options.stats, "print the guide's timings");
+  cmd->add_flag("--stats", options.stats,
+                "print the guide's timings and its path's validity checks");
 }
 
 // The main job: `stanceplan [SCENARIO.yaml]` with no sub-command (app/live/main_job.h).

@@ -1,8 +1,10 @@
 // The computed guide (app/pipeline.h): a guide for a scenario without one, read into it as its
 // `guide:` section would be, and its strip.
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <ostream>
+#include <string>
 
 #include "app/pipeline.h"
 #include "planner/guide/partial_guide.h"
@@ -54,12 +56,20 @@ std::optional<ComputedGuide> complete_guide(Scenario& scenario) {
 }
 
 void print_guide_stats(const ComputedGuide& guide, std::ostream& out) {
-  char line[256];
+  // Each leg's validity checks, "812+1290": the planner's effort against its budget per leg
+  // (search.guide_max_checks), the same on any machine.
+  std::string checks;
+  for (const std::int64_t c : guide.leg_checks) {
+    if (!checks.empty()) checks += '+';
+    checks += std::to_string(c);
+  }
+  char line[320];
   std::snprintf(line, sizeof line,
-                "stats: guide %.3f s (goal posture %.3f s, path %.3f s: %d waypoints, %zu after "
-                "shortcuts, %d collision pairs checked), %zu milestones\n",
-                guide.time_s, guide.posture_time_s, guide.path_time_s, guide.raw_waypoints,
-                guide.path.size(), guide.checked_pairs, guide.milestones.size());
+                "stats: guide %.3f s (goal posture %.3f s, path %.3f s: %s validity checks, %d "
+                "waypoints, %zu after shortcuts, %d collision pairs checked), %zu milestones\n",
+                guide.time_s, guide.posture_time_s, guide.path_time_s,
+                checks.empty() ? "0" : checks.c_str(), guide.raw_waypoints, guide.path.size(),
+                guide.checked_pairs, guide.milestones.size());
   out << line;
   if (!guide.approach_note.empty()) out << "stats: guide: " << guide.approach_note << "\n";
   if (guide.approach_milestones > 0)

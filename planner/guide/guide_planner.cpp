@@ -41,9 +41,9 @@ std::string no_path(const PlannedPath& path, GuideValidity& validity, const Guid
     out << "the goal posture is not valid: " << validity.why_invalid(q);
   } else {
     out << "no collision-free path from the initial to the goal configuration within "
-        << options.time_limit << " s (clearance " << options.clearance << " m over "
-        << validity.num_checked_pairs() << " collision pairs, a support within " << options.reach
-        << " m)";
+        << options.max_checks << " validity checks (search.guide_max_checks; clearance "
+        << options.clearance << " m over " << validity.num_checked_pairs()
+        << " collision pairs, a support within " << options.reach << " m)";
     // What blocks the straight way, a hint for the user (1 % steps).
     for (int k = 1; k < 100; ++k) {
       space.configuration(GuideSpace::between(space.x_start(), space.x_goal(), k / 100.0), q);
@@ -99,6 +99,7 @@ bool plan_leg(const Problem& problem, const Eigen::VectorXd& q_a, const Eigen::V
       options);
   guide.path_time_s += path.time_s;
   guide.raw_waypoints += path.raw_waypoints;
+  guide.leg_checks.push_back(path.checks);
   if (path.status != PathStatus::Found) {
     guide.message = no_path(path, validity, space, options);
     return false;

@@ -7,6 +7,7 @@
 //                 rule of guide_validity.h, then shortcuts;
 //   milestones:   points every GuideOptions::spacing of base travel (guide_milestones.h).
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,8 @@ const char* to_string(GuideStatus status);
 struct ComputedGuide {
   GuideStatus status = GuideStatus::NoPath;
   // When not computed: the stage that failed and why, e.g. "guide: goal posture: no posture for
-  // the goal stance: Infeasible (...)" or "guide: path: no collision-free path ... within 5 s".
+  // the goal stance: Infeasible (...)" or "guide: path: no collision-free path ... within 200000
+  // validity checks ...".
   std::string message;
   Eigen::VectorXd q_goal;                                 // the goal posture (when solved)
   std::vector<Eigen::VectorXd> path;                      // configurations at the path's waypoints
@@ -47,6 +49,9 @@ struct ComputedGuide {
   std::vector<int> completed;
   int raw_waypoints = 0;  // the planner's path before the shortcuts
   int checked_pairs = 0;  // collision pairs the validity rule checks
+  // Each leg's state-validity checks in the path planner (GuideOptions::max_checks each), in the
+  // order planned: the same for the same inputs on any machine, unlike the times below.
+  std::vector<std::int64_t> leg_checks;
   double posture_time_s = 0.0, path_time_s = 0.0, time_s = 0.0;
 };
 

@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <mutex>
 #include <random>
 
@@ -125,6 +127,23 @@ class GuideSampler : public ob::StateSampler {
   Eigen::VectorXd x_, y_;
 };
 
+// The path planner's budget (GuideOptions::max_checks) in the validity checks it makes: a counter,
+// not a clock, so that a run ends at the same check on any machine. Past the budget every check
+// fails (no tree grows, no trees connect) until the planner stops at its next iteration: a path is
+// found within the budget or not at all, even by an iteration that would have run past it (the
+// stairs' one iteration takes 329 checks). RRT-Connect checks from the thread that calls solve()
+// only: plain integers.
+struct CheckBudget {
+  static constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
+  std::int64_t checks = 0;
+  std::int64_t limit = kNone;
+  bool spend() {
+    if (checks >= limit) return false;
+    ++checks;
+    return true;
+  }
+};
+
 std::vector<Box> sampling_boxes(const GuideSpace& guide) {
   std::vector<Box> boxes;
   for (int e : guide.moving()) {
@@ -189,7 +208,9 @@ PlannedPath plan_guide_path(const GuideSpace& guide,
     return std::make_shared<GuideSampler>(s, guide, boxes, options);
   });
   auto si = std::make_shared<ob::SpaceInformation>(space);
+  CheckBudget budget;
   si->setStateValidityChecker([&, x = Eigen::VectorXd(guide.size())](const ob::State* s) mutable {
+    if (!budget.spend()) return false;
     to_x(s, x);
     return valid(x);
   });
@@ -217,8 +238,13 @@ PlannedPath plan_guide_path(const GuideSpace& guide,
   planner.setNearestNeighbors<ompl::NearestNeighborsLinear>();  // exact, draws no random numbers
   planner.setProblemDefinition(problem);
   planner.setup();
+  // The budget counts the planner's checks alone (not the ends' above, nor the shortcuts'). The
+  // condition has no period: the planner evaluates it itself, between its iterations.
+  budget = {0, options.max_checks};
   const ob::PlannerStatus status =
-      planner.solve(ob::timedPlannerTerminationCondition(options.time_limit));
+      planner.solve(ob::PlannerTerminationCondition([&] { return budget.checks >= budget.limit; }));
+  out.checks = budget.checks;
+  budget.limit = CheckBudget::kNone;
   if (status == ob::PlannerStatus::EXACT_SOLUTION) {
     auto& path = *problem->getSolutionPath()->as<og::PathGeometric>();
     out.raw_waypoints = int(path.getStateCount());

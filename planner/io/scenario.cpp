@@ -606,7 +606,8 @@ class ScenarioReader {
                                  "min_contacts",        "defer_repeated_failures",
                                  "expansion_batch",     "order_candidates",
                                  "progress_budget",     "guide_seed",
-                                 "guide_spacing",       "guide_time_limit"});
+                                 "guide_spacing",       "guide_max_checks",
+                                 "guide_time_limit"});
     if (node["contact_pairs"])
       read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"])
@@ -647,8 +648,15 @@ class ScenarioReader {
       s.guide.seed = std::uint32_t(integer(node["guide_seed"], "search.guide_seed", 0));
     if (node["guide_spacing"])
       s.guide.spacing = positive(node["guide_spacing"], "search.guide_spacing");
+    if (node["guide_max_checks"])
+      s.guide.max_checks = integer(node["guide_max_checks"], "search.guide_max_checks", 1);
+    // The old wall-clock budget: no number of seconds is a number of checks on every machine, so
+    // the file is refused with the field to write instead of read with a guessed budget.
     if (node["guide_time_limit"])
-      s.guide.time_limit = positive(node["guide_time_limit"], "search.guide_time_limit");
+      fail(node["guide_time_limit"], "search.guide_time_limit",
+           "replaced by search.guide_max_checks, the guide's budget in validity checks (default " +
+               std::to_string(GuideOptions{}.max_checks) +
+               "): seconds gave different guides on different machines");
     s.guide.contact_pairs = s.search.contact_pairs;
   }
 

@@ -22,7 +22,7 @@ struct Scenario : Problem {
   std::string description;
   SceneSpec spec;  // entities with resolved paths, ignored pairs, gravity
   SearchOptions search;
-  // The computed guide's settings (search.guide_seed, guide_spacing, guide_time_limit), used when
+  // The computed guide's settings (search.guide_seed, guide_spacing, guide_max_checks), used when
   // the file has no `guide:` section (planner/guide/guide_planner.h).
   GuideOptions guide;
   bool has_guide = false;  // the file has a `guide:` section

@@ -78,6 +78,41 @@ TEST(GuidePlanner, TheSameSeedGivesTheSameGuide) {
   ASSERT_EQ(a.path.size(), b.path.size());
   for (size_t i = 0; i < a.path.size(); ++i) EXPECT_EQ(a.path[i], b.path[i]) << "waypoint " << i;
   ASSERT_EQ(a.milestone_configurations.size(), b.milestone_configurations.size());
+  EXPECT_EQ(a.raw_waypoints, b.raw_waypoints);
+  EXPECT_EQ(a.leg_checks, b.leg_checks);
+}
+
+// The path planner's budget is counted in validity checks, never timed (issue 17): a budget of
+// exactly the checks the stairs' path took gives the same path; a few checks give none, with the
+// message naming the budget, and the same count twice, whatever the machine's speed.
+TEST(GuidePlanner, TheBudgetCountsValidityChecksNotTime) {
+  const Scenario s = guide_free("stairs.yaml");
+  const ComputedGuide found = compute_guide(s, s.guide);
+  ASSERT_EQ(found.status, GuideStatus::Computed) << found.message;
+  ASSERT_EQ(found.leg_checks.size(), 1u);
+  EXPECT_GT(found.leg_checks[0], 10);
+  EXPECT_LT(found.leg_checks[0], s.guide.max_checks / 10);  // the default keeps a wide margin
+
+  GuideOptions exact = s.guide;
+  exact.max_checks = int(found.leg_checks[0]);
+  const ComputedGuide again = compute_guide(s, exact);
+  ASSERT_EQ(again.status, GuideStatus::Computed) << again.message;
+  EXPECT_EQ(again.leg_checks, found.leg_checks);
+  EXPECT_EQ(again.path, found.path);
+
+  GuideOptions few = s.guide;
+  few.max_checks = 10;
+  const ComputedGuide a = compute_guide(s, few), b = compute_guide(s, few);
+  EXPECT_EQ(a.status, GuideStatus::NoPath);
+  EXPECT_EQ(a.message.rfind("guide: path: no collision-free path from the initial to the goal "
+                            "configuration within 10 validity checks (search.guide_max_checks;",
+                            0),
+            0u)
+      << a.message;
+  ASSERT_EQ(a.leg_checks.size(), 1u);
+  EXPECT_EQ(a.leg_checks[0], 10);  // not one past it, though the stairs' path takes one iteration
+  EXPECT_EQ(a.leg_checks, b.leg_checks);
+  EXPECT_EQ(a.message, b.message);
 }
 
 TEST(GuidePlanner, AGoalStanceWithoutPostureFailsAtTheGoalPostureStage) {
@@ -91,14 +126,16 @@ TEST(GuidePlanner, AGoalStanceWithoutPostureFailsAtTheGoalPostureStage) {
 TEST(GuidePlanner, AGoalBehindAWallFailsAtThePathStageWithinItsBudget) {
   const Scenario s = load_scenario(test::source_path("tests/data/guide/behind_wall.yaml"));
   GuideOptions options = s.guide;
-  options.time_limit = 0.5;
+  options.max_checks = 2000;
   const ComputedGuide g = compute_guide(s, options);
   EXPECT_EQ(g.status, GuideStatus::NoPath);
   EXPECT_EQ(g.message.rfind("guide: path: no collision-free path from the initial to the goal "
-                            "configuration within 0.5 s",
+                            "configuration within 2000 validity checks",
                             0),
             0u)
       << g.message;
+  ASSERT_EQ(g.leg_checks.size(), 1u);
+  EXPECT_EQ(g.leg_checks[0], 2000);
 }
 
 }  // namespace

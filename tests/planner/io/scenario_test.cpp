@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
 
 #include "planner/io/scenario.h"
 #include "planner/util/input_error.h"
@@ -139,6 +140,21 @@ TEST_F(ScenarioFaults, MinContactsIsAWholeNumberOfAtLeastOne) {
             path_ + ":21: search.min_contacts: expected a whole number >= 1, found 0");
   EXPECT_EQ(error_of(header() + stances() + "search:\n  min_contacts: 2.5\n"),
             path_ + ":21: search.min_contacts: expected a whole number >= 1, found 2.5");
+}
+
+// The computed guide's budget is a whole number of validity checks; the old wall-clock field is
+// refused with the field to write instead (no number of seconds means the same on every machine).
+TEST_F(ScenarioFaults, TheGuideBudgetIsCountedInChecksNotSeconds) {
+  write(header() + stances() + "search:\n  guide_max_checks: 5000\n");
+  EXPECT_EQ(load_scenario(path_).guide.max_checks, 5000);
+  EXPECT_EQ(error_of(header() + stances() + "search:\n  guide_max_checks: 0\n"),
+            path_ + ":21: search.guide_max_checks: expected a whole number >= 1, found 0");
+  EXPECT_EQ(error_of(header() + stances() + "search:\n  guide_time_limit: 5\n"),
+            path_ +
+                ":21: search.guide_time_limit: replaced by search.guide_max_checks, the "
+                "guide's budget in validity checks (default " +
+                std::to_string(GuideOptions{}.max_checks) +
+                "): seconds gave different guides on different machines");
 }
 
 TEST_F(ScenarioFaults, MissingSectionsAndFiles) {
