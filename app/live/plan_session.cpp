@@ -20,8 +20,9 @@ std::unique_ptr<StanceSearch> PlanSession::make_search() {
   search->set_gate(&gate_);
   search->set_observer([this](const SearchEvent& e) { record(e); });
   if (motion_) {  // a fresh check per run: motion_checks() is the current run's
-    motion_check_ =
-        std::make_unique<MotionTransitionCheck>(scenario_.scene, scenario_.solver, *motion_);
+    SolverOptions solver = scenario_.solver;
+    solver.cancel = search->cancel_flag();  // cancel() ends a check within a solver iteration
+    motion_check_ = std::make_unique<MotionTransitionCheck>(scenario_.scene, solver, *motion_);
     search->set_transition_check(motion_check_->as_check());
   }
   return search;

@@ -215,6 +215,7 @@ std::optional<SearchResult> StanceSearch::Run::reach_goal(int goal) {
     const auto started = Clock::now();
     StepMotion motion = search_.check_(tree_[size_t(node.parent)].step, node.step);
     result_.check_time_s += std::chrono::duration<double>(Clock::now() - started).count();
+    if (search_.stopped()) return give_up(PlanStatus::Cancelled, "cancelled");  // not a failure
     ++result_.transitions_checked;
     if (motion.status != MotionStatus::Solved) {
       ++result_.transitions_dropped;

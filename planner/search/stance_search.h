@@ -86,6 +86,9 @@ class StanceSearch {
   void set_transition_check(TransitionCheck check) { check_ = std::move(check); }
   // Thread-safe: the search stops before its next solver call.
   void cancel() { cancelled_ = true; }
+  // The flag cancel() sets, for the solver of a transition check (SolverOptions::cancel): a check
+  // then ends within a solver iteration and the search reports the cancel.
+  const std::atomic<bool>* cancel_flag() const { return &cancelled_; }
 
   SearchResult run();
 

@@ -480,6 +480,12 @@ PostureResult PostureSolver::solve_with(const PostureRequest& request,
                                         const SolverOptions& given) const {
   validate(request);
   SolverOptions options = given;
+  if (options.cancel && options.cancel->load()) {  // cancelled before it starts: Ipopt never runs
+    PostureResult result;
+    result.status = PostureStatus::NumericalFailure;
+    result.message = "cancelled";
+    return result;
+  }
   if (request.progress_budget > 0) options.stall.budget = request.progress_budget;
   // An unusable guess (e.g. a NaN from a degenerate configuration upstream) is a failed candidate
   // with its reason, not a malformed request; Ipopt never sees it.

@@ -9,6 +9,7 @@
 
 #include "planner/io/scenario.h"
 #include "planner/search/stance_search.h"
+#include "planner/solver/posture_solver.h"
 #include "tests/support/paths.h"
 
 namespace stanceplan {
@@ -107,6 +108,30 @@ TEST(TransitionCheck, WhenEveryTransitionIsRejectedTheSearchEndsWithoutAPlan) {
   EXPECT_TRUE(result.plan.steps.empty());
   ASSERT_GE(result.closest_node, 0);
   EXPECT_FALSE(result.tree[size_t(result.closest_node)].dropped);
+}
+
+// A cancel during a check ends the search Cancelled, and the transition is not dropped (the check
+// failing because it was cancelled says nothing of its motion). The check's solver, given the
+// search's flag, no longer runs Ipopt: a solve asked after the cancel returns at once.
+TEST(TransitionCheck, ACancelDuringACheckEndsTheSearchWithoutDroppingTheTransition) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  StanceSearch search(scenario, one_process(scenario));
+  SolverOptions solver = scenario.solver;
+  solver.cancel = search.cancel_flag();
+  const PostureSolver check_solver(scenario.scene, solver);
+  PostureResult after_cancel;
+  search.set_transition_check([&](const PlanStep&, const PlanStep&) {
+    search.cancel();
+    after_cancel = check_solver.solve(
+        scenario.loaded_request(scenario.initial_stance, scenario.initial_configuration));
+    return StepMotion{MotionStatus::ProjectionFailed, "cancelled", {}};
+  });
+  const SearchResult result = search.run();
+  EXPECT_EQ(result.status, PlanStatus::Cancelled);
+  EXPECT_EQ(result.transitions_dropped, 0);
+  EXPECT_EQ(after_cancel.status, PostureStatus::NumericalFailure);
+  EXPECT_EQ(after_cancel.message, "cancelled");
+  EXPECT_EQ(after_cancel.iterations, 0);
 }
 
 }  // namespace
