@@ -59,7 +59,7 @@ SolverOptions projection_options(const SolverOptions& plan, const MotionOptions&
                                                        {"mu_init", "1e-6"},
                                                        {"bound_push", "1e-8"},
                                                        {"bound_frac", "1e-8"}});
-  // Fixed costs of every solve, which a warm projection's 3-5 iterations do not amortise (perf,
+  // Fixed costs of every solve, which a warm projection's few iterations do not amortise (perf,
   // the table's motion). constr_mult_init_max 0: the constraint multipliers start at zero instead
   // of Ipopt's least-squares estimate, which costs a factorization of its own (and its symbolic
   // analysis), a third of the Ipopt time; from a warm start the estimate barely helps (the same
