@@ -12,22 +12,23 @@ namespace stanceplan::app {
 
 namespace {
 
-// "N steps, S samples, K solves; per step median M ms, p95 P ms" over `results`.
+// "N steps, S samples, K solves (I iterations); per step median M ms, p95 P ms" over `results`.
 void print_motion_figures(const std::vector<StepMotionResult>& results, size_t samples,
                           std::ostream& out) {
   std::vector<double> times;
-  int solves = 0;
+  int solves = 0, iterations = 0;
   for (const StepMotionResult& r : results) {
     times.push_back(r.time_ms);
     solves += r.solves;
+    iterations += r.iterations;
   }
   std::sort(times.begin(), times.end());
   const auto at = [&](double fraction) {
     return times.empty() ? 0.0 : times[size_t(fraction * double(times.size() - 1) + 0.5)];
   };
-  out << results.size() << " steps, " << samples << " samples, " << solves
-      << " solves; per step median " << std::fixed << std::setprecision(1) << at(0.5) << " ms, p95 "
-      << at(0.95) << " ms";
+  out << results.size() << " steps, " << samples << " samples, " << solves << " solves ("
+      << iterations << " iterations); per step median " << std::fixed << std::setprecision(1)
+      << at(0.5) << " ms, p95 " << at(0.95) << " ms";
 }
 
 size_t motion_samples(const Plan& plan) {

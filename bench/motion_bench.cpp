@@ -2,8 +2,8 @@
 // planned once as `plan --motion` plans it (2 threads, its transitions' motion checked by the
 // search, which drops those without: not timed), then the motion of the whole plan is computed
 // again, one thread, and timed per step. Counters: steps, steps_failed, transitions_dropped (by
-// the search), samples, solves per step, and the motion time per step, median and p95 (ms; target
-// <= 100 ms on the 2-core machine). Run:
+// the search), samples, solves and Ipopt iterations per step (both deterministic), and the motion
+// time per step, median and p95 (ms; target <= 100 ms on the 2-core machine). Run:
 //   build/bench/motion_bench --benchmark_filter=walk
 #include <benchmark/benchmark.h>
 
@@ -49,10 +49,11 @@ void plan_motion(benchmark::State& state, const std::string& name) {
     for (const PlanStep& s : plan.steps) samples += s.motion ? s.motion->samples.size() : 0;
   }
   std::vector<double> times;
-  double solves = 0.0;
+  double solves = 0.0, iterations = 0.0;
   for (const StepMotionResult& r : summary.steps) {
     times.push_back(r.time_ms);
     solves += r.solves;
+    iterations += r.iterations;
   }
   const double steps = std::max<size_t>(summary.steps.size(), 1);
   state.counters["steps"] = double(summary.steps.size());
@@ -60,6 +61,7 @@ void plan_motion(benchmark::State& state, const std::string& name) {
   state.counters["transitions_dropped"] = result.transitions_dropped;
   state.counters["samples"] = samples;
   state.counters["solves_per_step"] = solves / steps;
+  state.counters["iterations_per_step"] = iterations / steps;
   state.counters["median_ms"] = percentile(times, 0.5);
   state.counters["p95_ms"] = percentile(times, 0.95);
 }

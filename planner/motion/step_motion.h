@@ -27,8 +27,9 @@
 namespace stanceplan {
 
 struct StepMotionResult {
-  StepMotion motion;  // status, message, samples strictly between the two steps
-  int solves = 0;     // IK-statics solves, failed ones included
+  StepMotion motion;   // status, message, samples strictly between the two steps
+  int solves = 0;      // IK-statics solves, failed ones included
+  int iterations = 0;  // Ipopt iterations of those solves (deterministic, unlike time_ms)
   double time_ms = 0.0;
 };
 
@@ -100,6 +101,7 @@ class StepMotionPlanner {
   Eigen::VectorXd q_ref_;   // workspace of the interpolation
   std::optional<SampleSpacing> spacing_;  // surfaces of both steps' contacts
   int solves_ = 0;
+  int iterations_ = 0;
   int bridge_depth_ = 0;
   int segment_solves_ = 0;  // solves_ when the current segment started
 };
