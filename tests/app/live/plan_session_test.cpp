@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 
 #include "app/live/plan_session.h"
@@ -43,6 +44,27 @@ TEST(PlanSession, RunsTheWalkOnItsThreadAndKeepsEveryEventInOrder) {
   EXPECT_EQ(session.event(seen - 1).kind, SearchEventKind::PlanFound);
   EXPECT_FALSE(session.error());
   for (size_t i = 1; i < seen; ++i) EXPECT_GE(session.event_time_s(i), session.event_time_s(i - 1));
+}
+
+// With motion, the search thread checks the plan's transitions (the motion planner's Ipopt in
+// this process, beside the forked workers) while this thread reads events: the plan carries every
+// step's motion, and the checks are reported once the session finished.
+TEST(PlanSession, WithMotionThePlanFoundCarriesEveryStepsMotion) {
+  const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  PlanSession session(scenario, single_process(scenario), MotionOptions{});
+  EXPECT_THROW(session.motion_checks(), std::logic_error);  // not before the search finished
+  session.start();
+  for (size_t seen = 0; session.wait_for_event(seen, kPatience);) ++seen;
+  ASSERT_TRUE(session.wait_until_finished(kPatience));
+  ASSERT_TRUE(session.result().has_value());
+  const SearchResult result = *session.result();  // a copy: result() returns one
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  for (size_t i = 1; i < result.plan.steps.size(); ++i) {
+    ASSERT_TRUE(result.plan.steps[i].motion.has_value()) << "step " << i;
+    EXPECT_FALSE(result.plan.steps[i].motion->samples.empty()) << "step " << i;
+  }
+  EXPECT_EQ(session.motion_checks().size(), result.plan.steps.size() - 1);
+  EXPECT_EQ(result.transitions_checked, int(result.plan.steps.size()) - 1);
 }
 
 // The panel's interface: while paused, no event happens; step(1) lets exactly one through.
