@@ -9,25 +9,19 @@
 // (PostureRequest::approaching), and the hands go round the desk's edge by the detour.
 #include <gtest/gtest.h>
 
-#include "planner/motion/motion_transition_check.h"
 #include "tests/support/planned_scenario.h"
+#include "tests/support/planned_with_motion.h"
 
 namespace stanceplan {
 namespace {
 
 TEST(MotionDesk, ThePlanFoundWithItsMotionCheckedMovesAtEveryStepAndCertifies) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_sit_desk.yaml"));
-  SearchOptions options = scenario.search;
-  options.threads = 1;
-  MotionTransitionCheck check(scenario.scene, scenario.solver, MotionOptions{});
-  StanceSearch search(scenario, options);
-  search.set_transition_check(check.as_check());
-  const SearchResult result = search.run();
+  const auto [result, checks] = test::plan_with_motion(scenario);
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_GE(result.transitions_dropped, 1);  // the foot under the stretched leg
   int dropped = 0;
-  for (const StepMotionResult& r : check.checked())
-    dropped += r.motion.status != MotionStatus::Solved;
+  for (const StepMotionResult& r : checks) dropped += r.motion.status != MotionStatus::Solved;
   EXPECT_EQ(dropped, result.transitions_dropped);
   for (size_t i = 1; i < result.plan.steps.size(); ++i) {
     ASSERT_TRUE(result.plan.steps[i].motion.has_value()) << "step " << i;

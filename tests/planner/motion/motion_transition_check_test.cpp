@@ -8,23 +8,19 @@
 #include "planner/search/stance_search.h"
 #include "tests/support/paths.h"
 #include "tests/support/planned_scenario.h"
+#include "tests/support/planned_with_motion.h"
 
 namespace stanceplan {
 namespace {
 
 TEST(MotionTransitionCheck, TheWalkPlannedWithItCarriesEveryStepsMotionAndCertifies) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  SearchOptions options = scenario.search;
-  options.threads = 1;
-  MotionTransitionCheck check(scenario.scene, scenario.solver, MotionOptions{});
-  StanceSearch search(scenario, options);
-  search.set_transition_check(check.as_check());
-  SearchResult result = search.run();
+  auto [result, checks] = test::plan_with_motion(scenario);
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_EQ(result.transitions_dropped, 0);
-  ASSERT_EQ(check.checked().size(), result.plan.steps.size() - 1);
-  EXPECT_EQ(result.transitions_checked, int(check.checked().size()));
-  for (const StepMotionResult& r : check.checked()) {
+  ASSERT_EQ(checks.size(), result.plan.steps.size() - 1);
+  EXPECT_EQ(result.transitions_checked, int(checks.size()));
+  for (const StepMotionResult& r : checks) {
     EXPECT_EQ(r.motion.status, MotionStatus::Solved) << r.motion.message;
     EXPECT_TRUE(r.motion.samples.empty());  // moved into the plan
     EXPECT_GT(r.solves, 0);
