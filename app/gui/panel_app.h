@@ -31,8 +31,8 @@ struct PanelOptions {
   // A panel script (panel_script.h): actions run in order against the live window, one line
   // printed per action; read and checked before the window opens.
   std::string script;
-  // The motion between the plan's steps, computed once the plan is found (the timeline plays it
-  // as it arrives; plan.json is saved again with it).
+  // The motion between the plan's steps: the search checks it on the plan it finds and drops a
+  // transition without one (the timeline plays it; plan.json is saved again with it).
   bool motion = true;
 };
 

@@ -52,8 +52,8 @@ void add_panel_subcommand(CLI::App& cli, PanelOptions& options) {
       ->type_name("WxH");
   cmd->add_flag("--paused", options.start_paused, "hold the search before its first event");
   cmd->add_flag("!--no-motion", options.motion,
-                "no motion between the plan's steps (computed once the plan is found, played by "
-                "the timeline, saved in plan.json)");
+                "no motion between the plan's steps (by default the search checks the motion of "
+                "each transition of the plan it finds, the timeline plays it, plan.json has it)");
   cmd->add_option("--speed-limit", options.speed_limit,
                   "events per second while running (default: no limit)")
       ->check(CLI::NonNegativeNumber);
