@@ -25,7 +25,15 @@ constexpr double kFirstStepFraction = 0.9;
 // A projection that still lands too far after this many halvings has jumped (the reference moved
 // little, the solution a lot): the jump is bridged rather than halved further.
 constexpr int kHalvingsBeforeBridge = 2;
-constexpr int kMaxBridgeDepth = 1;  // a bridge never bridges
+// A halved step that still lands too far, at more than this fraction of the distance the step
+// twice as long landed at, has jumped too: bridged at once
+// (halving a smooth projection's step about halves the distance). The climb's step 2: the
+// travel's projection jumps 4.4-4.6 spacings at s = 0.79 whatever the step.
+constexpr double kJumpRatio = 0.75;
+// A bridge may bridge once: the bridge of the climb's step 2 meets a jump of its own (1.14
+// spacings, whatever the step); without it, the travel crept towards its jump bridging again and
+// again (step 2: 78 -> 50 projections with both).
+constexpr int kMaxBridgeDepth = 2;
 
 std::string fixed3(double v) {
   char text[32];
@@ -254,6 +262,11 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
   const double ds_max = 1.0 / std::max(1.0, std::ceil(guess / kFirstStepFraction));
   double s = 0.0, ds = ds_max;
   int halvings = 0;
+  double far_ratio = 0.0;  // the last landing too far at this s (0: none since the last sample)
+  // A bridge from q_prev failed: another from it would fail likewise (measured, the climb's step
+  // 2: the bridges from the sample before the jump failed whatever their end, those from the next
+  // one joined), so the step is halved without one until the next sample.
+  bool bridge_failed = false;
   const size_t first = samples->size();
   Eigen::VectorXd q_prev = *segment.q_start;
   while (true) {
@@ -293,6 +306,8 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
         }
         s = s_next;
         halvings = 0;
+        far_ratio = 0.0;
+        bridge_failed = false;
         // The next step aims at kFirstStepFraction of the spacing again, scaled by what this one
         // measured (the spacing is about linear in a short step), at most doubled: doubling
         // after every success overshot, and 37 % of the pen's projections (27 of 72 a step)
@@ -302,12 +317,16 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
         if (!segment.end && s >= 1.0) return true;
         continue;
       }
-      if (r.status == PostureStatus::Solved && halvings >= kHalvingsBeforeBridge &&
-          bridge(segment, s, s_next, q_prev, r.q, samples, motion)) {
+      const bool jumped = halvings >= 1 && far_ratio > 0.0 && ratio > kJumpRatio * far_ratio;
+      if (r.status == PostureStatus::Solved) far_ratio = ratio;
+      if (r.status == PostureStatus::Solved && (halvings >= kHalvingsBeforeBridge || jumped) &&
+          !bridge_failed &&
+          !(bridge_failed = !bridge(segment, s, s_next, q_prev, r.q, samples, motion))) {
         q_prev = r.q;
         samples->push_back({std::move(r.q), std::move(r.forces), std::move(r.torques)});
         s = s_next;
         halvings = 0;
+        far_ratio = 0.0;
         if (!segment.end && s >= 1.0) return true;
         continue;
       }
