@@ -16,10 +16,14 @@ namespace stanceplan::test {
 
 // The scenario's own search options with one solver process: solver calls are deterministic, so
 // tests can bound them.
-inline SearchResult plan_with_one_process(const Scenario& scenario) {
+inline SearchOptions one_process(const Scenario& scenario) {
   SearchOptions options = scenario.search;
   options.threads = 1;
-  return StanceSearch(scenario, options).run();
+  return options;
+}
+
+inline SearchResult plan_with_one_process(const Scenario& scenario) {
+  return StanceSearch(scenario, one_process(scenario)).run();
 }
 
 // Certifies a plan through its file, as `stanceplan certify` would, and reports every failed check.

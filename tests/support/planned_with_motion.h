@@ -7,6 +7,7 @@
 #include "planner/io/scenario.h"
 #include "planner/motion/motion_transition_check.h"
 #include "planner/search/stance_search.h"
+#include "tests/support/planned_scenario.h"
 
 namespace stanceplan::test {
 
@@ -16,10 +17,8 @@ struct PlannedWithMotion {
 };
 
 inline PlannedWithMotion plan_with_motion(const Scenario& scenario) {
-  SearchOptions options = scenario.search;
-  options.threads = 1;
   MotionTransitionCheck check(scenario.scene, scenario.solver, MotionOptions{});
-  StanceSearch search(scenario, options);
+  StanceSearch search(scenario, one_process(scenario));
   search.set_transition_check(check.as_check());
   PlannedWithMotion planned{search.run(), {}};
   planned.checks = check.checked();

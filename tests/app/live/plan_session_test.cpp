@@ -8,6 +8,7 @@
 
 #include "app/live/plan_session.h"
 #include "tests/support/paths.h"
+#include "tests/support/planned_scenario.h"
 
 namespace stanceplan {
 namespace {
@@ -20,15 +21,9 @@ using app::PlanSession;
 constexpr auto kQuiet = 300ms;
 constexpr auto kPatience = 60s;
 
-SearchOptions single_process(const Scenario& scenario) {
-  SearchOptions options = scenario.search;
-  options.threads = 1;
-  return options;
-}
-
 TEST(PlanSession, RunsTheWalkOnItsThreadAndKeepsEveryEventInOrder) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  PlanSession session(scenario, single_process(scenario));
+  PlanSession session(scenario, test::one_process(scenario));
   EXPECT_FALSE(session.finished());
   session.start();
   // A reader with its own cursor, as the snapshot writer and the panel read.
@@ -51,7 +46,7 @@ TEST(PlanSession, RunsTheWalkOnItsThreadAndKeepsEveryEventInOrder) {
 // step's motion, and the checks are reported once the session finished.
 TEST(PlanSession, WithMotionThePlanFoundCarriesEveryStepsMotion) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  PlanSession session(scenario, single_process(scenario), MotionOptions{});
+  PlanSession session(scenario, test::one_process(scenario), MotionOptions{});
   EXPECT_THROW(session.motion_checks(), std::logic_error);  // not before the search finished
   session.start();
   for (size_t seen = 0; session.wait_for_event(seen, kPatience);) ++seen;
@@ -70,7 +65,7 @@ TEST(PlanSession, WithMotionThePlanFoundCarriesEveryStepsMotion) {
 // The panel's interface: while paused, no event happens; step(1) lets exactly one through.
 TEST(PlanSession, TheStepGateDrivesTheSearchOneEventAtATime) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  PlanSession session(scenario, single_process(scenario));
+  PlanSession session(scenario, test::one_process(scenario));
   session.gate().pause();
   session.start();
   EXPECT_FALSE(session.wait_for_event(0, kQuiet)) << "paused before the first event";
@@ -97,7 +92,7 @@ TEST(PlanSession, TheStepGateDrivesTheSearchOneEventAtATime) {
 
 TEST(PlanSession, CancelReleasesAPausedSearch) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  PlanSession session(scenario, single_process(scenario));
+  PlanSession session(scenario, test::one_process(scenario));
   session.gate().pause();
   session.start();
   session.gate().step(2);
@@ -126,7 +121,7 @@ TEST(PlanSession, DestroyingARunningSessionCancelsAndJoins) {
 // solver processes and gate, whose events are numbered from 0 again, to the plan.
 TEST(PlanSession, RestartAfterACancelRunsANewSearchToThePlan) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  PlanSession session(scenario, single_process(scenario));
+  PlanSession session(scenario, test::one_process(scenario));
   session.start();
   ASSERT_TRUE(session.wait_for_event(3, kPatience));
   session.cancel();
@@ -147,7 +142,7 @@ TEST(PlanSession, RestartAfterACancelRunsANewSearchToThePlan) {
 // A paused gate stays paused across a restart: the new search waits for the panel.
 TEST(PlanSession, RestartKeepsAPausedGatePaused) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  PlanSession session(scenario, single_process(scenario));
+  PlanSession session(scenario, test::one_process(scenario));
   session.gate().pause();
   session.gate().step(2);
   session.start();

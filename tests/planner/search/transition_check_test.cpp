@@ -11,6 +11,7 @@
 #include "planner/search/stance_search.h"
 #include "planner/solver/posture_solver.h"
 #include "tests/support/paths.h"
+#include "tests/support/planned_scenario.h"
 
 namespace stanceplan {
 namespace {
@@ -43,17 +44,11 @@ TransitionCheck rejecting_first_addition(CheckLog& log, Eigen::VectorXd* rejecte
   };
 }
 
-SearchOptions one_process(const Scenario& scenario) {
-  SearchOptions options = scenario.search;
-  options.threads = 1;
-  return options;
-}
-
 TEST(TransitionCheck, ARejectedTransitionIsDroppedAndTheSearchFindsAnotherPlan) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
   CheckLog log;
   Eigen::VectorXd rejected;
-  StanceSearch search(scenario, one_process(scenario));
+  StanceSearch search(scenario, test::one_process(scenario));
   search.set_transition_check(rejecting_first_addition(log, &rejected));
   std::vector<SearchEvent> failed;
   search.set_observer([&](const SearchEvent& e) {
@@ -85,7 +80,7 @@ TEST(TransitionCheck, ARejectedTransitionIsDroppedAndTheSearchFindsAnotherPlan) 
 
 TEST(TransitionCheck, WithoutACheckThePlanHasNoMotion) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  const SearchResult result = StanceSearch(scenario, one_process(scenario)).run();
+  const SearchResult result = StanceSearch(scenario, test::one_process(scenario)).run();
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_EQ(result.transitions_checked, 0);
   for (const PlanStep& step : result.plan.steps) EXPECT_FALSE(step.motion.has_value());
@@ -93,7 +88,7 @@ TEST(TransitionCheck, WithoutACheckThePlanHasNoMotion) {
 
 TEST(TransitionCheck, WhenEveryTransitionIsRejectedTheSearchEndsWithoutAPlan) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  SearchOptions options = one_process(scenario);
+  SearchOptions options = test::one_process(scenario);
   options.max_nodes = 60;
   StanceSearch search(scenario, options);
   int calls = 0;
@@ -115,7 +110,7 @@ TEST(TransitionCheck, WhenEveryTransitionIsRejectedTheSearchEndsWithoutAPlan) {
 // search's flag, no longer runs Ipopt: a solve asked after the cancel returns at once.
 TEST(TransitionCheck, ACancelDuringACheckEndsTheSearchWithoutDroppingTheTransition) {
   const Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  StanceSearch search(scenario, one_process(scenario));
+  StanceSearch search(scenario, test::one_process(scenario));
   SolverOptions solver = scenario.solver;
   solver.cancel = search.cancel_flag();
   const PostureSolver check_solver(scenario.scene, solver);
