@@ -180,6 +180,14 @@ void draw_header(const Scene& scene, const SessionMirror& mirror, const SearchEv
     ImGui::SameLine();
     ImGui::TextColored(muted_text_color(), "\u00b7 node %d \u00b7 depth %d \u00b7 event %d",
                        node->id, node->depth, e.number);
+    if (status == NodeStatus::NoMotion) {  // why: its own MotionFailed event, or an ancestor's
+      const std::string why = node->motion_failed >= 0
+                                  ? mirror.events()[size_t(node->motion_failed)].message
+                                  : "the transition into an ancestor has no motion";
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored(status_color(status), "%s", why.c_str());
+      ImGui::PopTextWrapPos();
+    }
   }
   if (e.parent >= 0) {
     const std::string label = "parent #" + std::to_string(e.parent);

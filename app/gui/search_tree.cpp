@@ -54,7 +54,10 @@ void SearchTree::add(const SearchEvent& event, size_t index) {
       closest_ = event.node;
       break;
     case SearchEventKind::MotionFailed:
-      if (node(event.node) != nullptr) drop(event.node);
+      if (node(event.node) != nullptr) {
+        nodes_[event.node].motion_failed = static_cast<long>(index);
+        drop(event.node);
+      }
       break;
   }
 }

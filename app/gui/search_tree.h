@@ -25,7 +25,9 @@ struct TreeNode {
   int expansions = 0;            // times popped from the open queue (0 or 1; retries re-expand)
   int milestone = -1;            // highest milestone index this node made the search reach
   bool on_plan = false;
-  bool dropped = false;  // no motion into it or into an ancestor (SearchNode::dropped)
+  bool dropped = false;     // no motion into it or into an ancestor (SearchNode::dropped)
+  long motion_failed = -1;  // index of the MotionFailed event that dropped it (-1: none, or an
+                            // ancestor's)
 };
 
 class SearchTree {

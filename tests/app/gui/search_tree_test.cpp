@@ -68,6 +68,9 @@ TEST(SearchTree, ANodeWithoutMotionAndItsSubtreeAreMarked) {
   for (size_t i = 0; i < events.size(); ++i) tree.add(events[i], i);
   EXPECT_EQ(tree.status(1), NodeStatus::NoMotion);
   EXPECT_EQ(tree.status(3), NodeStatus::NoMotion);
+  EXPECT_EQ(tree.node(1)->motion_failed, 8);  // the event that dropped it; its subtree's: none
+  EXPECT_EQ(tree.node(3)->motion_failed, -1);
+  EXPECT_EQ(tree.node(2)->motion_failed, -1);
   EXPECT_EQ(tree.status(4), NodeStatus::Goal);
   EXPECT_EQ(tree.status(2), NodeStatus::PlanPath);
   EXPECT_EQ(tree.plan_path(), (std::vector<int>{0, 2, 4}));
