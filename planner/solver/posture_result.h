@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "planner/contact/contact.h"
@@ -55,6 +56,14 @@ struct PostureResult {
   // With SolverOptions::diagnose_infeasibility: the family without which the request is solved
   // ("torque_limits", "collision"), or "" when the geometry/statics themselves are infeasible.
   std::string blocking_family;
+
+  // A solve that did not run, or stopped, for a reason outside the program: "cancelled", a
+  // solver process that died, an unusable initial guess.
+  static PostureResult numerical_failure(std::string why) {
+    PostureResult r;
+    r.message = std::move(why);  // status: NumericalFailure (the default)
+    return r;
+  }
 };
 
 }  // namespace stanceplan

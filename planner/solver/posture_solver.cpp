@@ -479,22 +479,14 @@ PostureResult PostureSolver::solve(const PostureRequest& request,
 PostureResult PostureSolver::solve_with(const PostureRequest& request,
                                         const SolverOptions& given) const {
   validate(request);
+  // Cancelled before it starts: Ipopt never runs.
+  if (given.cancel && given.cancel->load()) return PostureResult::numerical_failure("cancelled");
   SolverOptions options = given;
-  if (options.cancel && options.cancel->load()) {  // cancelled before it starts: Ipopt never runs
-    PostureResult result;
-    result.status = PostureStatus::NumericalFailure;
-    result.message = "cancelled";
-    return result;
-  }
   if (request.progress_budget > 0) options.stall.budget = request.progress_budget;
   // An unusable guess (e.g. a NaN from a degenerate configuration upstream) is a failed candidate
   // with its reason, not a malformed request; Ipopt never sees it.
-  if (std::string reason = unusable_guess(scene_.system, request); !reason.empty()) {
-    PostureResult result;
-    result.status = PostureStatus::NumericalFailure;
-    result.message = std::move(reason);
-    return result;
-  }
+  if (std::string reason = unusable_guess(scene_.system, request); !reason.empty())
+    return PostureResult::numerical_failure(std::move(reason));
   const bool collisions = scene_.collision && options.enforce_collisions;
   // Pinned pairs have no row in the program: their distance follows from the fixed placements
   // alone, so a stance that puts them into each other is infeasible before any solve.

@@ -52,13 +52,6 @@ bool receive(int fd, std::string* message) {
   return read_all(fd, message->data(), n);
 }
 
-PostureResult failure(const std::string& why) {
-  PostureResult r;
-  r.status = PostureStatus::NumericalFailure;
-  r.message = why;
-  return r;
-}
-
 }  // namespace
 
 SolverPool::SolverPool(const PostureSolver& solver, int processes) : solver_(solver) {
@@ -114,7 +107,7 @@ SolverPool::Worker SolverPool::spawn() {
       try {
         result = solver.solve(deserialize_request(message));
       } catch (const std::exception& e) {
-        result = failure(std::string("solver process: ") + e.what());
+        result = PostureResult::numerical_failure(std::string("solver process: ") + e.what());
       }
       if (!send(up[1], serialize(result))) break;
     }
@@ -153,11 +146,9 @@ std::vector<PostureResult> SolverPool::solve_all(const std::vector<PostureReques
                                                  const std::atomic<bool>* cancel) {
   std::vector<PostureResult> results(requests.size());
   const auto cancelled = [&] { return cancel && cancel->load(); };
-  if (workers_.empty()) {
+  if (workers_.empty()) {  // a solve asked after the cancel returns at once; a running one stops
     for (size_t i = 0; i < requests.size(); ++i)
-      results[i] = cancelled() ? failure("cancelled")
-                   : cancel    ? solver_.solve(requests[i], cancel)  // running solves stop too
-                               : solver_.solve(requests[i]);
+      results[i] = cancel ? solver_.solve(requests[i], cancel) : solver_.solve(requests[i]);
     return results;
   }
   shared_cancel_->store(false);
@@ -169,14 +160,14 @@ std::vector<PostureResult> SolverPool::solve_all(const std::vector<PostureReques
     for (size_t w = 0; w < workers_.size(); ++w) {
       if (busy[w] >= 0 || next >= requests.size()) continue;
       if (cancelled()) {
-        results[next++] = failure("cancelled");
+        results[next++] = PostureResult::numerical_failure("cancelled");
         ++done;
         continue;
       }
       if (dispatch(w, serialize(requests[next]))) {
         busy[w] = int(next++);
       } else {
-        results[next++] = failure("no solver process could be started");
+        results[next++] = PostureResult::numerical_failure("no solver process could be started");
         ++done;
       }
     }
@@ -198,7 +189,7 @@ std::vector<PostureResult> SolverPool::solve_all(const std::vector<PostureReques
       if (receive(workers_[w].from_worker, &message)) {
         results[busy[w]] = deserialize_result(message);
       } else {
-        results[busy[w]] = failure("the solver process died");
+        results[busy[w]] = PostureResult::numerical_failure("the solver process died");
         stop(workers_[w]);
       }
       busy[w] = -1;
