@@ -70,6 +70,9 @@ void add_motion_subcommand(CLI::App& cli, MotionCommandOptions& options) {
   cmd->add_option("--step-seconds", options.step_seconds,
                   "with --csv: seconds each step's motion lasts (default 1)")
       ->check(CLI::Range(0.01, 3600.0));
+  cmd->add_flag("--stats", options.stats,
+                "also a line per step: motion time, IK-statics solves and their Ipopt iterations, "
+                "samples");
 }
 
 int run_motion(const MotionCommandOptions& options, std::ostream& out, std::ostream& err) {
@@ -78,8 +81,8 @@ int run_motion(const MotionCommandOptions& options, std::ostream& out, std::ostr
     throw InputError(options.plan + ": failed: a failed solve has no motion");
   const Scenario scenario = scenario_of(loaded, err);
   Plan plan = loaded.plan;
-  const bool every_step =
-      add_plan_motion(scenario.scene, scenario.solver, options.motion, plan, out, err);
+  const bool every_step = add_plan_motion(scenario.scene, scenario.solver, options.motion, plan,
+                                          out, err, options.stats);
   const std::string path = options.out.empty() ? options.plan : options.out;
   const int code = write_certified_plan(plan, scenario, path, false, err);
   if (code != kExitSuccess) return code;

@@ -18,6 +18,7 @@ struct MotionCommandOptions {
   std::string out;      // empty: PLAN.json itself
   std::string csv_dir;  // DIR/ENTITY.csv per robot or object (planner/io/trajectory_csv.h)
   double step_seconds = 1.0;
+  bool stats = false;  // a line per step: time, solves, iterations, samples
   MotionOptions motion;
 };
 

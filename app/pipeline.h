@@ -94,8 +94,9 @@ void write_guide_strip(const Scenario& scenario, const ComputedGuide& guide,
 // --- motion (pipeline_motion.cpp)
 // Adds the motion between consecutive steps to `plan` and prints its timing on `out` (one line).
 // A step whose motion fails keeps none, with a warning on `err` naming it and why: false then.
+// `stats`: also a line per step (time, solves, Ipopt iterations, samples).
 bool add_plan_motion(const Scene& scene, const SolverOptions& solver, const MotionOptions& options,
-                     Plan& plan, std::ostream& out, std::ostream& err);
+                     Plan& plan, std::ostream& out, std::ostream& err, bool stats = false);
 // The motion's line for a search that checked its transitions (PlanSession with motion): every
 // check's figures (the dropped transitions' too), the samples of the plan found.
 void print_motion_checks(const std::vector<StepMotionResult>& checks, const SearchResult& result,

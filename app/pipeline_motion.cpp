@@ -31,6 +31,19 @@ void print_motion_figures(const std::vector<StepMotionResult>& results, size_t s
       << at(0.5) << " ms, p95 " << at(0.95) << " ms";
 }
 
+// "stats: motion into step I: T ms, K solves (N iterations), S samples" per step.
+void print_step_figures(const std::vector<StepMotionResult>& results, const Plan& plan,
+                        std::ostream& out) {
+  for (size_t i = 0; i < results.size() && i + 1 < plan.steps.size(); ++i) {
+    const StepMotionResult& r = results[i];
+    const std::optional<StepMotion>& motion = plan.steps[i + 1].motion;
+    out << "stats: motion into step " << i + 1 << ": " << std::fixed << std::setprecision(1)
+        << r.time_ms << " ms, " << r.solves << " solves (" << r.iterations << " iterations), "
+        << (motion ? motion->samples.size() : 0) << " samples, " << to_string(r.motion.status)
+        << "\n";
+  }
+}
+
 size_t motion_samples(const Plan& plan) {
   size_t samples = 0;
   for (const PlanStep& step : plan.steps)
@@ -41,11 +54,12 @@ size_t motion_samples(const Plan& plan) {
 }  // namespace
 
 bool add_plan_motion(const Scene& scene, const SolverOptions& solver, const MotionOptions& options,
-                     Plan& plan, std::ostream& out, std::ostream& err) {
+                     Plan& plan, std::ostream& out, std::ostream& err, bool stats) {
   const PlanMotionSummary summary = add_motion(scene, solver, options, plan);
   out << "motion: ";
   print_motion_figures(summary.steps, motion_samples(plan), out);
   out << "\n";
+  if (stats) print_step_figures(summary.steps, plan, out);
   // A step whose motion failed keeps none: the plan stays certified, the GIF jumps there.
   for (size_t i = 1; i < plan.steps.size(); ++i) {
     std::optional<StepMotion>& motion = plan.steps[i].motion;

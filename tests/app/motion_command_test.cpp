@@ -28,9 +28,15 @@ TEST(MotionCommand, AddsTheCertifiedMotionToAPlanFileAndExportsItAndPlaysIt) {
   write_file_atomically(plan, original.dump(1));
   ASSERT_TRUE(original["entities"][0].contains("surfaces_file"));
   const test::CliResult r =
-      test::run_cli({"motion", plan, "--out", moved, "--csv", (dir / "csv").string()});
+      test::run_cli({"motion", plan, "--out", moved, "--csv", (dir / "csv").string(), "--stats"});
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_THAT(r.out, HasSubstr("motion: 2 steps, "));
+  // --stats: a line per step, each into a step of the plan (1 and 2), none beyond.
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("stats: motion into step 1: [0-9.]+ ms, [1-9][0-9]* "
+                                              "solves \\([0-9]+ iterations\\), [0-9]+ samples, "
+                                              "solved"));
+  EXPECT_THAT(r.out, HasSubstr("stats: motion into step 2: "));
+  EXPECT_THAT(r.out, ::testing::Not(HasSubstr("stats: motion into step 3")));
   EXPECT_THAT(r.out, HasSubstr("wrote " + moved + " (certified, with motion)"));
   const nlohmann::json rewritten = nlohmann::json::parse(read_text_file(moved));
   EXPECT_EQ(rewritten["format"], "stanceplan/plan@2");
