@@ -85,6 +85,31 @@ void add_bounding_sphere(const std::vector<CollisionShape>& shapes, CollisionLin
   link->radius = radius;
 }
 
+void add_bounding_box(const std::vector<CollisionShape>& shapes, CollisionLink* link) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+  for (int s = link->first_shape; s < link->first_shape + link->num_shapes; ++s) {
+    const CollisionShape& shape = shapes[s];
+    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(shape.margin);
+    const auto add = [&](const Eigen::Vector3d& p_G) {
+      const Eigen::Vector3d p_L = shape.T_LG * p_G;
+      lo = lo.cwiseMin(p_L - grow);
+      hi = hi.cwiseMax(p_L + grow);
+    };
+    if (shape.polytope) {
+      for (const Eigen::Vector3d& v_G : shape.polytope->vertices) add(v_G);
+    } else if (shape.point_core) {
+      add(Eigen::Vector3d::Zero());
+    } else {  // no vertices: the cube around FCL's bounding sphere of the core
+      const double r = shape.geometry->aabb_radius;
+      for (int corner = 0; corner < 8; ++corner)
+        add(shape.geometry->aabb_center +
+            Eigen::Vector3d((corner & 1) ? r : -r, (corner & 2) ? r : -r, (corner & 4) ? r : -r));
+    }
+  }
+  link->box_center_L = 0.5 * (lo + hi);
+  link->box_half_L = 0.5 * (hi - lo);
+}
+
 }  // namespace
 
 MeshHull HullCache::get(const std::string& mesh_path, const Eigen::Vector3d& scale,
@@ -196,6 +221,7 @@ void CollisionModel::add_entity_shapes(const System& system, int e, const Collis
       shapes_.push_back(make_shape(entity, link, g, options, cache));
     }
     add_bounding_sphere(shapes_, &collision_link);
+    add_bounding_box(shapes_, &collision_link);
     links_.push_back(collision_link);
   }
 }

@@ -80,6 +80,10 @@ struct CollisionLink {
   // Bounding sphere of all its shapes, in the link frame.
   Eigen::Vector3d center_L = Eigen::Vector3d::Zero();
   double radius = 0.0;
+  // Bounding box of all its shapes, axis-aligned in the link frame: centre and half extents. Far
+  // tighter than the sphere for a long or flat link (a platform, a floor, a shin).
+  Eigen::Vector3d box_center_L = Eigen::Vector3d::Zero();
+  Eigen::Vector3d box_half_L = Eigen::Vector3d::Zero();
 };
 
 // A candidate pair: indices into CollisionModel::links(), a < b.

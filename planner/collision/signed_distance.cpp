@@ -2,6 +2,7 @@
 
 #include <fcl/narrowphase/distance.h>
 
+#include <algorithm>
 #include <exception>
 #include <limits>
 #include <utility>
@@ -184,14 +185,33 @@ DistanceResult signed_distance(const CollisionModel& model, CollisionData& data,
   return best;
 }
 
+namespace {
+// Signed distance from the sphere (c_W, r) to `link`'s bounding box at pose T_WL (negative
+// inside: minus the sphere's penetration depth into the box), a lower bound of the signed
+// distance from the sphere to the link's shapes: a translation that separates the sphere from the
+// box separates whatever they contain.
+double sphere_box_lower_bound(const CollisionLink& link, const Eigen::Isometry3d& T_WL,
+                              const Eigen::Vector3d& c_W, double r) {
+  const Eigen::Vector3d c_L = T_WL.linear().transpose() * (c_W - T_WL.translation());
+  const Eigen::Vector3d excess = (c_L - link.box_center_L).cwiseAbs() - link.box_half_L;
+  const double outside = excess.maxCoeff();
+  return (outside > 0.0 ? excess.cwiseMax(0.0).norm() : outside) - r;
+}
+}  // namespace
+
 double distance_lower_bound(const CollisionModel& model, std::span<const ModelData> data,
                             int pair) {
   const CollisionPair& p = model.pairs()[pair];
   const CollisionLink& a = model.links()[p.a];
   const CollisionLink& b = model.links()[p.b];
-  const Eigen::Vector3d c_A_W = data[a.entity].T_WL[a.link] * a.center_L;
-  const Eigen::Vector3d c_B_W = data[b.entity].T_WL[b.link] * b.center_L;
-  return (c_B_W - c_A_W).norm() - a.radius - b.radius;
+  const Eigen::Isometry3d& T_WA = data[a.entity].T_WL[a.link];
+  const Eigen::Isometry3d& T_WB = data[b.entity].T_WL[b.link];
+  const Eigen::Vector3d c_A_W = T_WA * a.center_L;
+  const Eigen::Vector3d c_B_W = T_WB * b.center_L;
+  // Each shape set lies in its sphere and in its box: the largest of three lower bounds.
+  return std::max({(c_B_W - c_A_W).norm() - a.radius - b.radius,
+                   sphere_box_lower_bound(a, T_WA, c_B_W, b.radius),
+                   sphere_box_lower_bound(b, T_WB, c_A_W, a.radius)});
 }
 
 GradientBlocks gradient_blocks(const System& system, const CollisionModel& model, int pair) {

@@ -46,7 +46,8 @@ struct SignedDistanceOptions {
 DistanceResult signed_distance(const CollisionModel& model, CollisionData& data, int pair,
                                const SignedDistanceOptions& options = {});
 
-// Cheap lower bound of the pair's distance from the links' bounding spheres (may be negative).
+// Cheap lower bound of the pair's distance from the links' bounding spheres and link-frame
+// bounding boxes (sphere against sphere, each sphere against the other's box; may be negative).
 double distance_lower_bound(const CollisionModel& model, std::span<const ModelData> data, int pair);
 
 // Which parts of q a pair's gradient row touches: the configuration segments of the links'

@@ -60,6 +60,11 @@ SolverOptions projection_options(const SolverOptions& plan, const MotionOptions&
   // compl_inf_tol). Measured (iterations of the same projections): pen 1446 -> 1274, table
   // 14410 -> 13180, same solves, samples and certification.
   out.optimality_tolerance = std::max(out.optimality_tolerance, 1e-2);
+  // Complementarity likewise: a bound held at s z <= 1e-3 rather than 1e-4 sits a little farther
+  // inside its feasible side (an interior point never leaves it), and Ipopt stops at the first
+  // iterate acceptable at ten times these tolerances (acceptable_iter 1; feasibility stays at
+  // constr_viol_tol). Measured on the climb: 1020 -> 1019 projections, 4069 -> 3742 iterations.
+  out.complementarity_tolerance = std::max(out.complementarity_tolerance, 1e-3);
   // Each sample starts next to its solution (the previous sample): a small, fixed barrier and
   // starting points left where they are. Measured on the walk's 22 steps (same 959 solves): median
   // 231 -> 162 ms per step, p95 1012 -> 543 ms, against Ipopt's adaptive barrier from 0.1.
@@ -83,7 +88,8 @@ SolverOptions projection_options(const SolverOptions& plan, const MotionOptions&
   out.ipopt_options.insert(out.ipopt_options.begin() + 4, {{"constr_mult_init_max", "0.0"},
                                                            {"mumps_permuting_scaling", "0"},
                                                            {"mumps_scaling", "0"},
-                                                           {"bound_mult_init_method", "mu-based"}});
+                                                           {"bound_mult_init_method", "mu-based"},
+                                                           {"acceptable_iter", "1"}});
   return out;
 }
 
@@ -181,7 +187,8 @@ bool StepMotionPlanner::set_up(const PlanStep& a, const PlanStep& b, StepMotion*
 
 PostureResult StepMotionPlanner::project(const Segment& segment, double s,
                                          const Eigen::VectorXd& q_prev,
-                                         const MotionSample* previous, bool retry) {
+                                         const MotionSample* previous, bool retry,
+                                         const Secant* secant) {
   interpolate_configuration(scene_.system, *segment.q_start, *segment.q_ref_end, s, q_ref_);
   request_.contacts.resize(size_t(held_));
   if (segment.link) {
@@ -190,22 +197,38 @@ PostureResult StepMotionPlanner::project(const Segment& segment, double s,
     task.placement = path.placement_at(s);                        // E10-E13
     task.standoff = path.h_from + s * (path.h_to - path.h_from);  // E9 offset along s2's normal
   }
-  return project_reference(q_ref_, q_prev, previous, retry);
+  return project_reference(q_ref_, q_prev, previous, retry, secant);
+}
+
+void StepMotionPlanner::guess_forces(const MotionSample* previous, const Secant* secant) {
+  for (int t = 0; t < held_; ++t) request_.contacts[size_t(t)].force_guess_W.clear();
+  if (!previous) return;
+  // Warm start: the previous sample's forces (held contacts only carry force).
+  for (const VertexForce& f : previous->forces) {
+    ContactTask& task = request_.contacts[size_t(f.contact)];
+    if (task.force_guess_W.empty())
+      task.force_guess_W.assign(scene_.surfaces.get(task.contact.s1).vertices_S.size(),
+                                Eigen::Vector3d::Zero());
+    task.force_guess_W[size_t(f.vertex)] = f.force_W;
+  }
+  if (!secant || !secant->before || secant->before->forces.size() != previous->forces.size())
+    return;
+  for (size_t i = 0; i < previous->forces.size(); ++i) {
+    const VertexForce& f = previous->forces[i];
+    const VertexForce& g = secant->before->forces[i];
+    if (f.contact == g.contact && f.vertex == g.vertex)
+      request_.contacts[size_t(f.contact)].force_guess_W[size_t(f.vertex)] +=
+          secant->k * (f.force_W - g.force_W);
+  }
 }
 
 PostureResult StepMotionPlanner::project_reference(const Eigen::VectorXd& q_ref,
                                                    const Eigen::VectorXd& q_prev,
-                                                   const MotionSample* previous, bool retry) {
-  for (int t = 0; t < held_; ++t) request_.contacts[size_t(t)].force_guess_W.clear();
-  if (previous)  // warm start: the previous sample's forces (held contacts only carry force)
-    for (const VertexForce& f : previous->forces) {
-      ContactTask& task = request_.contacts[size_t(f.contact)];
-      if (task.force_guess_W.empty())
-        task.force_guess_W.assign(scene_.surfaces.get(task.contact.s1).vertices_S.size(),
-                                  Eigen::Vector3d::Zero());
-      task.force_guess_W[size_t(f.vertex)] = f.force_W;
-    }
+                                                   const MotionSample* previous, bool retry,
+                                                   const Secant* secant) {
+  guess_forces(previous, secant);
   request_.q_init = q_prev;
+  if (secant) request_.q_init += secant->k * (q_prev - *secant->q_before);
   request_.q_ref = q_ref;  // E22: the interpolated configuration
   ++solves_;
   PostureResult r = solver_.solve(request_);
@@ -269,6 +292,10 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
   bool bridge_failed = false;
   const size_t first = samples->size();
   Eigen::VectorXd q_prev = *segment.q_start;
+  // The sample before q_prev and its s, for the secant predictor: measured on the climb's motion
+  // (1354 -> 1020 projections, 4800 -> 4098 iterations, step 2 126 -> 101 iterations).
+  Eigen::VectorXd q_before;
+  double s_before = -1.0;  // < 0: none yet (the segment's start, or the end of a bridge)
   while (true) {
     if (solves_ - segment_solves_ >= options_.max_solves) {
       motion->status = MotionStatus::ProjectionFailed;
@@ -288,15 +315,20 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
       why = "the last sample is " + describe(m) + " from the end";
     } else {
       const MotionSample* previous = samples->size() > first ? &samples->back() : nullptr;
+      Secant secant{&q_before, nullptr, s_before < 0.0 ? 0.0 : (s_next - s) / (s - s_before)};
+      if (s_before >= 0.0 && samples->size() >= first + 2) secant.before = previous - 1;
       // The retry only once halving failed twice: most failures are a step too long, and a retry
       // (the plan's weights) follows the reference less closely (measured: retrying every failure
       // lost a step of the walk).
       PostureResult r =
-          project(segment, s_next, q_prev, previous, halvings >= kHalvingsBeforeBridge);
+          project(segment, s_next, q_prev, previous, halvings >= kHalvingsBeforeBridge,
+                  s_before < 0.0 ? nullptr : &secant);
       const SpacingMeasure m =
           r.status == PostureStatus::Solved ? spacing_->measure(q_prev, r.q) : SpacingMeasure{};
       const double ratio = m.ratio(joint, point);
       if (r.status == PostureStatus::Solved && ratio <= 1.0) {
+        q_before = q_prev;
+        s_before = s;
         q_prev = r.q;
         samples->push_back({std::move(r.q), std::move(r.forces), std::move(r.torques)});
         if (int(samples->size()) > options_.max_samples) {
@@ -323,6 +355,7 @@ bool StepMotionPlanner::run_segment(const Segment& segment, std::vector<MotionSa
           !bridge_failed &&
           !(bridge_failed = !bridge(segment, s, s_next, q_prev, r.q, samples, motion))) {
         q_prev = r.q;
+        s_before = -1.0;  // the bridge's samples lie between: no secant across them
         samples->push_back({std::move(r.q), std::move(r.forces), std::move(r.torques)});
         s = s_next;
         halvings = 0;

@@ -77,13 +77,26 @@ class StepMotionPlanner {
   // its samples appended; false (nothing appended) when that fails too.
   bool bridge(const Segment& segment, double s0, double s1, const Eigen::VectorXd& q_from,
               const Eigen::VectorXd& q_to, std::vector<MotionSample>* samples, StepMotion* motion);
+  // The secant predictor of a continuation method (Allgower & Georg, Introduction to Numerical
+  // Continuation Methods, 1990): the sample before the last (q_before, its forces `before` when it
+  // is a sample), and the ratio k of the next step in s to the last one. The next sample is
+  // guessed on the line through the last two: q_prev + k (q_prev - q_before), forces alike.
+  struct Secant {
+    const Eigen::VectorXd* q_before = nullptr;
+    const MotionSample* before = nullptr;
+    double k = 0.0;
+  };
   // Projects the sample at s of the segment, warm started from q_prev (forces from `previous`
-  // when given); with `retry`, a failed projection is solved again by retry_solver_.
+  // when given), or from the secant's guess; with `retry`, a failed projection is solved again by
+  // retry_solver_.
   PostureResult project(const Segment& segment, double s, const Eigen::VectorXd& q_prev,
-                        const MotionSample* previous, bool retry);
+                        const MotionSample* previous, bool retry, const Secant* secant = nullptr);
   // The projection of reference q_ref with the contacts request_ holds.
   PostureResult project_reference(const Eigen::VectorXd& q_ref, const Eigen::VectorXd& q_prev,
-                                  const MotionSample* previous, bool retry);
+                                  const MotionSample* previous, bool retry,
+                                  const Secant* secant = nullptr);
+  // request_'s force guesses: `previous`'s forces, extrapolated along the secant when given.
+  void guess_forces(const MotionSample* previous, const Secant* secant);
   // The straight travel from q_from to q_to failed (its samples from `first` on reach some way):
   // a detour on the stance manifold (stance_rrt.h) replaces them, the moving link free.
   bool detour(const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,

@@ -594,8 +594,11 @@ PostureResult PostureSolver::solve_once(const PostureRequest& request_in,
     // Pairs outside the active set may have come closer than the margin: add them.
     const size_t before = active.size();
     if (collisions) {
+      // The active pairs are rows of the program: their E20 residuals are recorded already.
+      std::vector<bool> unchecked = excluded;
+      for (int p : active) unchecked[size_t(p)] = true;
       const double worst =
-          grow_collision_set(pair_distances(scene_, result.q, excluded, options.collision_margin),
+          grow_collision_set(pair_distances(scene_, result.q, unchecked, options.collision_margin),
                              bounds_of_all(), active);
       result.residuals["collision"] = std::max(result.residuals["collision"], worst);
     }

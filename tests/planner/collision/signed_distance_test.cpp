@@ -170,6 +170,42 @@ TEST(SignedDistance, FloorPairGradientIsOnlyTheBodyBlock) {
   EXPECT_EQ(blocks.size[0], 8);
 }
 
+// distance_lower_bound never exceeds the distance (random configurations, every pair), and its
+// link-frame boxes make it far tighter than the bounding spheres for a flat link: the 4 m floor's
+// sphere (radius 2 m) would keep every link "near" it.
+TEST(SignedDistance, LowerBoundIsSoundAndTheBoxesTightenItForAFlatLink) {
+  Scene s;
+  std::srand(7);
+  const auto uniform = [] { return 2.0 * double(std::rand()) / RAND_MAX - 1.0; };
+  const int floor_torso = s.pair(s.floor, "ground", s.body, "torso");
+  ASSERT_GE(floor_torso, 0);
+  double tightest_gain = 0.0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Eigen::VectorXd q = s.generic_configuration();
+    for (int i = 0; i < 4; ++i) q[s.system.offset(s.arm) + i] = 3.0 * uniform();
+    q.segment(s.system.offset(s.body), 3) << 0.6 * uniform(), 0.6 * uniform(),
+        0.5 * uniform() + 0.4;
+    const Eigen::Vector4d quat(uniform(), uniform(), uniform(), uniform());
+    q.segment<4>(s.system.offset(s.body) + Entity::kBaseQuaternion) = quat.normalized();
+    q[s.system.offset(s.body) + 7] = 3.0 * uniform();
+    s.set(q);
+    for (int p = 0; p < int(s.model->pairs().size()); ++p) {
+      const double bound = distance_lower_bound(*s.model, s.data, p);
+      const DistanceResult r = signed_distance(*s.model, *s.work, p);
+      ASSERT_LE(bound, r.distance + 1e-12) << "pair " << p << " trial " << trial;
+    }
+    const CollisionLink& a = s.model->links()[s.model->pairs()[floor_torso].a];
+    const CollisionLink& b = s.model->links()[s.model->pairs()[floor_torso].b];
+    const double spheres =
+        (s.data[b.entity].T_WL[b.link] * b.center_L - s.data[a.entity].T_WL[a.link] * a.center_L)
+            .norm() -
+        a.radius - b.radius;
+    tightest_gain =
+        std::max(tightest_gain, distance_lower_bound(*s.model, s.data, floor_torso) - spheres);
+  }
+  EXPECT_GT(tightest_gain, 1.0);  // m: the sphere bound is below -1.5 m, the box bound near d
+}
+
 TEST(SignedDistance, AxisAlignedBoxesGiveExactDepthAndWitnessPoints) {
   // Torso (0.2 x 0.15 x 0.25, identity orientation) against the floor's top face at z = 0.
   Scene s;
