@@ -43,16 +43,16 @@ struct SearchOptions {
   bool defer_repeated_failures = true;
   // Lazy expansion: a node's candidates are solved this many at a time, in order; the node stays
   // open with the rest, ranked by its cost plus its next candidate's support share, so the search
-  // moves on as soon as a child is better than it. 0 (the default) solves every candidate of an
-  // expansion at once (Algorithm 1 as written). Measured with bench/untuned_bench (README,
-  // Untuned scenarios): 3 takes none of the paper's scenarios to more calls than 0 (desk 91 -> 84,
-  // ball 187 -> 141, dual arm 66 -> 40, ...) and the untuned ones to fewer or as many (stairs
-  // 77 -> 38, dual-arm hand-over 348 -> 114, side-step 20 -> 18, walk with a turn 29); 2 makes
-  // fewer calls on the untuned ones (31, 82, 17, 28) but more on the paper's dual arm (71). Not
-  // the default yet: the paper's dual arm then plans a hand-over whose motion into step 10 fails
-  // (planner/motion/, "spacing_not_reached"; tests/scenarios/arms_test.cpp). Never tied to
-  // `threads`: the plan is the same with any number of solver processes.
-  int expansion_batch = 0;
+  // moves on as soon as a child is better than it. 0 solves every candidate of an expansion at
+  // once (Algorithm 1 as written). Measured with bench/untuned_bench (README, Untuned scenarios):
+  // 3 (the default) takes none of the paper's scenarios to more calls than 0 (desk 91 -> 84, ball
+  // 187 -> 141, dual arm 66 -> 40, ...) and the untuned ones to fewer or as many (stairs 77 -> 38,
+  // dual-arm hand-over 348 -> 114, side-step 20 -> 18, walk with a turn 29); 2 makes fewer calls
+  // on the untuned ones (31, 82, 17, 28) but more on the paper's dual arm (71). The paper's dual
+  // arm's hand-over with 3 moves at every step (its step 10 once had no motion, before the motion's
+  // secant predictor). Never tied to `threads`: the plan is the same with any number of solver
+  // processes.
+  int expansion_batch = 3;
   // With lazy expansion, the order of a node's candidates: removals, then additions by how close
   // the guide's posture is to realising them (support_share.h; a heuristic); false: the
   // enumeration's order.
@@ -63,9 +63,9 @@ struct SearchOptions {
   // anything through). With lazy expansion (2 or 3) 30 stopped no solve that would have succeeded
   // on the untuned and the paper's scenarios (the same calls and plans, 20-55 % fewer
   // iterations); with expansion_batch 0 it stops slow successes of the untuned dual-arm hand-over
-  // (348 -> 796 calls), hence off by default with it. 0: every candidate runs to the solver's
-  // iteration limit.
-  int progress_budget = 0;
+  // (348 -> 796 calls): set it to 0 with expansion_batch 0. 0: every candidate runs to the
+  // solver's iteration limit.
+  int progress_budget = 30;
 };
 
 }  // namespace stanceplan

@@ -53,10 +53,11 @@ TEST(HumanoidSitDesk, PlansWalksSitsAndCertifies) {
   EXPECT_LT(q[2], 0.75);
 }
 
-// Lazy expansion (search.expansion_batch: 2, opt-in): at the crouch both feet are down and both
-// thighs a few millimetres above the seat in the guide's posture; those additions are tried before
-// a foot is lifted (support_share.h). Lifting a foot first sent the search into single-support
-// stances that cannot sit: 147 calls then, 80 measured now (91 with every candidate at once).
+// Lazy expansion two at a time (search.expansion_batch: 2; the default is 3): at the crouch both
+// feet are down and both thighs a few millimetres above the seat in the guide's posture; those
+// additions are tried before a foot is lifted (support_share.h). Lifting a foot first sent the
+// search into single-support stances that cannot sit: 147 calls then, 80 measured now (91 with
+// every candidate at once).
 TEST(HumanoidSitDesk, ExpandedLazilyTheThighsAreTriedBeforeAFootIsLifted) {
   Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_sit_desk.yaml"));
   scenario.search.expansion_batch = 2;

@@ -47,11 +47,11 @@ TEST(Untuned, TheStairsPlanWithoutKneesBesideTheirOwnSoles) {
   EXPECT_LE(result.solver_calls, 77);
 }
 
-// Lazy expansion (search.expansion_batch: 2, opt-in) with the support-share ordering
-// (support_share.h): the sole above the guided tread is tried first, a knee while the guide stands
-// last, and the search moves on as soon as a child is better. 31 calls for 21 steps were measured
-// (77 for 13 steps with every candidate of an expansion solved at once). The batch never depends
-// on the number of solver processes: two give the same plan and the same calls.
+// Lazy expansion two at a time (search.expansion_batch: 2; the default is 3) with the support-share
+// ordering (support_share.h): the sole above the guided tread is tried first, a knee while the
+// guide stands last, and the search moves on as soon as a child is better. 31 calls for 21 steps
+// were measured (77 for 13 steps with every candidate of an expansion solved at once). The batch
+// never depends on the number of solver processes: two give the same plan and the same calls.
 TEST(Untuned, TheStairsPlanWithTwoCallsPerStepWhenExpandedLazily) {
   Scenario scenario = load_scenario(test::source_path("scenarios/untuned/stairs.yaml"));
   scenario.search.expansion_batch = 2;
@@ -71,8 +71,9 @@ TEST(Untuned, TheStairsPlanWithTwoCallsPerStepWhenExpandedLazily) {
 }
 
 // Lazy expansion three at a time with the progress budget (search.expansion_batch: 3,
-// search.progress_budget: 30; both opt-in, the measured setting): the side-step plans with at most
-// 2 calls per step (18 calls for 9 steps measured; 20 with the defaults).
+// search.progress_budget: 30; the defaults, stated here so that the test keeps its meaning): the
+// side-step plans with at most 2 calls per step (18 calls for 9 steps measured; 20 with every
+// candidate at once).
 TEST(Untuned, TheSideStepPlansWithTwoCallsPerStepWhenExpandedLazilyWithAProgressBudget) {
   Scenario scenario = load_scenario(test::source_path("scenarios/untuned/side_step.yaml"));
   scenario.search.expansion_batch = 3;
