@@ -165,12 +165,11 @@ void report_no_plan(const SearchResult& result, const Scenario& scenario, std::o
       << "\n";
   err << "  " << result.nodes_expanded << " nodes expanded, " << result.solver_calls
       << " solver calls, " << std::fixed << std::setprecision(2) << result.wall_time_s << " s\n";
-  if (result.transitions_dropped >
-      0)  // plans were found, each with a transition that has no motion
+  // Plans were found, each with a transition that has no motion.
+  if (result.transitions_dropped > 0)
     err << "  " << result.transitions_dropped
         << " transitions of plans found had no motion and were dropped; without motion "
-           "(--no-motion,"
-           " or plan without --motion) the search does not check them\n";
+           "(--no-motion, or plan without --motion) the search does not check them\n";
 }
 
 }  // namespace

@@ -95,15 +95,10 @@ void add_bounding_box(const std::vector<CollisionShape>& shapes, CollisionLink* 
       lo = lo.cwiseMin(p_L - grow);
       hi = hi.cwiseMax(p_L + grow);
     };
-    if (shape.polytope) {
-      for (const Eigen::Vector3d& v_G : shape.polytope->vertices) add(v_G);
-    } else if (shape.point_core) {
+    if (shape.point_core) {
       add(Eigen::Vector3d::Zero());
-    } else {  // no vertices: the cube around FCL's bounding sphere of the core
-      const double r = shape.geometry->aabb_radius;
-      for (int corner = 0; corner < 8; ++corner)
-        add(shape.geometry->aabb_center +
-            Eigen::Vector3d((corner & 1) ? r : -r, (corner & 2) ? r : -r, (corner & 4) ? r : -r));
+    } else {  // every other core is a polytope (CollisionShape)
+      for (const Eigen::Vector3d& v_G : shape.polytope->vertices) add(v_G);
     }
   }
   link->box_center_L = 0.5 * (lo + hi);
