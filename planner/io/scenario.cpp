@@ -607,7 +607,7 @@ class ScenarioReader {
                                  "expansion_batch",     "order_candidates",
                                  "progress_budget",     "guide_seed",
                                  "guide_spacing",       "guide_max_checks",
-                                 "guide_time_limit"});
+                                 "guide_time_limit",    "batch_margin"});
     if (node["contact_pairs"])
       read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"])
@@ -633,6 +633,8 @@ class ScenarioReader {
           boolean(node["defer_repeated_failures"], "search.defer_repeated_failures");
     if (node["expansion_batch"])
       s.search.expansion_batch = integer(node["expansion_batch"], "search.expansion_batch", 0);
+    if (node["batch_margin"])
+      s.search.batch_margin = number(node["batch_margin"], "search.batch_margin");
     if (node["order_candidates"])
       s.search.order_candidates = boolean(node["order_candidates"], "search.order_candidates");
     if (node["progress_budget"])

@@ -78,6 +78,27 @@ bool StanceSearch::Run::already_in_tree(const SearchNode& node) const {
   return false;
 }
 
+// A removal keeps every other contact at its placement, so its child is a node of the tree when
+// one has the child's stance with those placements (not a dropped one: it blocks only its own
+// parent's transition): the solve would end "already in the tree" whatever its posture. Removing
+// the contact the node itself added gives back its parent.
+bool StanceSearch::Run::removal_reaches_a_node(const SearchNode& node, const Candidate& c) const {
+  if (c.add) return false;
+  const Stance& from = node.stance();
+  const Stance next = from.without(from.find(c.contact));
+  for (const SearchNode& m : tree_) {
+    if (m.dropped || !(m.stance() == next)) continue;
+    bool same = true;
+    for (size_t k = 0; k < from.contacts().size() && same; ++k) {
+      const int i = m.stance().find(from.contacts()[k]);
+      same = from.contacts()[k].same_surfaces(c.contact) ||
+             (i >= 0 && same_placement(m.placements[size_t(i)], node.placements[k], options_));
+    }
+    if (same) return true;
+  }
+  return false;
+}
+
 // Fewest contacts from the goal's stance, then the lowest cost.
 int StanceSearch::Run::closest() const {
   if (tree_.empty()) return -1;  // cancelled before the root was realised

@@ -35,13 +35,6 @@ Eigen::VectorXd perturbed(const System& system, const Eigen::VectorXd& q, int no
   return out;
 }
 
-// Removing the contact that made a node gives back its parent's stance at the parent's
-// placements, which loop avoidance would reject after the solve: not worth a solver call.
-bool undoes_last_step(const SearchNode& node, const Candidate& c) {
-  return !c.add && node.step.action == "add" && node.step.changed &&
-         node.step.changed->same_surfaces(c.contact);
-}
-
 }  // namespace
 
 // A milestone may state which contacts are offered while it is the target (a phase of the task:
@@ -75,7 +68,7 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   pending_[size_t(n)].clear();
   for (size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
-    if (undoes_last_step(node, c)) continue;
+    if (removal_reaches_a_node(node, c)) continue;
     // Failed from the same situation before: solved only when backtracking (failure_memo.h).
     const bool repeated = options_.defer_repeated_failures &&
                           failures_.seen(problem_.scene, data, node.q(), node.stance(), c);
@@ -87,8 +80,20 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   return take_pending(n);
 }
 
+// The next batch of node n's pending candidates. A batch of one when the guide's posture realises
+// the first (support share within options_.batch_margin) and every other is an addition at least
+// that much further: the rest are deferred to backtracking (retries_, tried once the open list is
+// empty) and n leaves the open list, so a stale n is not expanded anew for the next milestone with
+// its unlikely candidates (a knee on the floor beside a sole about to step).
 std::vector<StanceSearch::Attempt> StanceSearch::Run::take_pending(int n) {
   std::deque<Attempt>& pending = pending_[size_t(n)];
+  if (pending.empty()) return {};
+  if (solves_alone(pending)) {
+    std::vector<Attempt> batch{pending.front()};
+    retries_.insert(retries_.end(), pending.begin() + 1, pending.end());
+    pending.clear();
+    return batch;
+  }
   const size_t count = options_.expansion_batch > 0
                            ? std::min(pending.size(), size_t(options_.expansion_batch))
                            : pending.size();
@@ -96,6 +101,16 @@ std::vector<StanceSearch::Attempt> StanceSearch::Run::take_pending(int n) {
   pending.erase(pending.begin(), pending.begin() + long(count));
   if (!pending.empty()) open_.push_back(n);
   return batch;
+}
+
+bool StanceSearch::Run::solves_alone(const std::deque<Attempt>& pending) const {
+  const Attempt& first = pending.front();
+  const double margin = options_.batch_margin;
+  if (options_.expansion_batch <= 0 || margin < 0.0 || !first.candidate.add || first.share > margin)
+    return false;
+  return std::all_of(pending.begin() + 1, pending.end(), [&](const Attempt& a) {
+    return a.candidate.add && a.share > first.share + margin;
+  });
 }
 
 PostureRequest StanceSearch::Run::request_for(const Attempt& a, size_t index) const {

@@ -77,6 +77,7 @@ class StanceSearch::Run {
   double cost(const SearchNode& node) const;
   bool is_goal(const SearchNode& node) const;
   bool already_in_tree(const SearchNode& node) const;
+  bool removal_reaches_a_node(const SearchNode& node, const Candidate& c) const;
   int closest() const;
   void advance_milestones();
   // A node's rank in the open list: its cost, plus, once it is expanded for the targeted
@@ -90,8 +91,9 @@ class StanceSearch::Run {
   // rest wait in pending_, lazy expansion); nullopt when the search was cancelled at the event.
   std::optional<std::vector<Attempt>> expand(int n);
   // The next options_.expansion_batch pending attempts of node n (all with 0); n goes back to the
-  // open list while some are left.
+  // open list while some are left. One alone when solves_alone (SearchOptions::batch_margin).
   std::vector<Attempt> take_pending(int n);
+  bool solves_alone(const std::deque<Attempt>& pending) const;
   PostureRequest request_for(const Attempt& attempt, size_t index) const;
 
   StanceSearch& search_;

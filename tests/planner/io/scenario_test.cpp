@@ -142,6 +142,15 @@ TEST_F(ScenarioFaults, MinContactsIsAWholeNumberOfAtLeastOne) {
             path_ + ":21: search.min_contacts: expected a whole number >= 1, found 2.5");
 }
 
+// The batch margin (search.batch_margin, m): a number, negative turns the batch of one off.
+TEST_F(ScenarioFaults, TheBatchMarginIsANumber) {
+  write(header() + stances() + "search:\n  batch_margin: -1\n");
+  EXPECT_EQ(load_scenario(path_).search.batch_margin, -1.0);
+  EXPECT_EQ(SearchOptions{}.batch_margin, 0.03);
+  EXPECT_EQ(error_of(header() + stances() + "search:\n  batch_margin: wide\n"),
+            path_ + ":21: search.batch_margin: expected a number, found \"wide\"");
+}
+
 // The computed guide's budget is a whole number of validity checks; the old wall-clock field is
 // refused with the field to write instead (no number of seconds means the same on every machine).
 TEST_F(ScenarioFaults, TheGuideBudgetIsCountedInChecksNotSeconds) {
