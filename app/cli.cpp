@@ -15,6 +15,7 @@
 #include "app/plan_command.h"
 #include "app/posture_command.h"
 #include "app/render_command.h"
+#include "app/replay_command.h"
 #include "planner/util/input_error.h"
 
 namespace stanceplan::app {
@@ -113,6 +114,28 @@ void add_plan(CLI::App& cli, PlanOptions& options) {
   cmd->add_flag("--motion", options.motion,
                 "add the quasi-static motion between consecutive steps (certified sample by "
                 "sample; plan format @2)");
+  cmd->add_option("--requests", options.requests,
+                  "write each candidate's solver request into DIR as request_NNNNN.bin (NNNNN: "
+                  "its event number, as --verbose prints it), for stanceplan replay");
+}
+
+void add_replay(CLI::App& cli, ReplayOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "replay",
+      "Solve one candidate's request again, alone, as the search solved it (from plan "
+      "--requests): with Ipopt's iteration log, or another iteration limit. Exit 2 when not "
+      "solved");
+  cmd->add_option("scenario", options.scenario, "the scenario the request was planned for")
+      ->required();
+  cmd->add_option("request", options.request,
+                  "request file (plan --requests DIR/request_NNNNN.bin)")
+      ->required();
+  cmd->add_option("--print-level", options.print_level,
+                  "Ipopt's console output: 0 none (default), 5 one line per iteration")
+      ->check(whole_number_in(0, 12));
+  cmd->add_option("--max-iterations", options.max_iterations,
+                  "Ipopt's iteration limit (default: the scenario's solver.max_iterations)")
+      ->check(whole_number_in(1, 100000));
 }
 
 void add_guide(CLI::App& cli, GuideCommandOptions& options) {
@@ -168,6 +191,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_plan(cli, plan);
   GuideCommandOptions guide;
   add_guide(cli, guide);
+  ReplayOptions replay;
+  add_replay(cli, replay);
   RenderOptions render_options;
   add_render_subcommand(cli, render_options);
   PanelOptions panel;
@@ -195,6 +220,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (cli.got_subcommand("posture")) return run_posture(posture, out, err);
     if (cli.got_subcommand("plan")) return run_plan(plan, out, err);
     if (cli.got_subcommand("guide")) return run_guide(guide, out, err);
+    if (cli.got_subcommand("replay")) return run_replay(replay, out, err);
     if (cli.got_subcommand("certify")) return run_certify(certify_plan, out, err);
     if (cli.got_subcommand("render")) return run_render(render_options, out, err);
     if (cli.got_subcommand("panel")) return run_panel(panel, out, err);

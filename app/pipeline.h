@@ -43,6 +43,9 @@ struct PlanOptions {
   std::optional<unsigned> seed;    // the computed guide's seed (default: search.guide_seed)
   // The motion between consecutive steps (planner/motion/) in the plan written: plan --motion.
   bool motion = false;
+  // Each candidate's solver request as DIR/request_NNNNN.bin, NNNNN its event number
+  // (planner/io/request_file.h; stanceplan replay). Empty: none.
+  std::string requests;
 };
 
 // A scenario planned: the exit code (0: a certified plan written to PlanOptions::out; 2: no plan,

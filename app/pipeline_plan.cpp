@@ -23,6 +23,7 @@
 #include "app/model_warnings.h"
 #include "app/pipeline.h"
 #include "app/plan_output.h"
+#include "planner/io/request_file.h"
 #include "planner/search/plan_path.h"
 #include "planner/search/stance_search.h"
 
@@ -120,6 +121,14 @@ std::function<void(const SearchEvent&)> event_reporter(const Scenario& scenario,
   };
 }
 
+// plan --requests: a candidate event's request as DIR/request_NNNNN.bin.
+void write_request(const SearchEvent& e, const std::string& dir) {
+  if (e.kind != SearchEventKind::Candidate || !e.request) return;
+  std::ostringstream name;
+  name << dir << "/request_" << std::setw(5) << std::setfill('0') << e.number << ".bin";
+  write_request_file(name.str(), *e.request);
+}
+
 // Runs the search to its end on the session's thread, reporting its events here; returns their
 // number. SIGINT / SIGTERM cancel it.
 size_t run_search(PlanSession& session, std::optional<SnapshotWriter>& snapshots,
@@ -135,6 +144,7 @@ size_t run_search(PlanSession& session, std::optional<SnapshotWriter>& snapshots
     follow(session, [&](const SearchEvent& e) {
       ++events;
       print(e);
+      if (!options.requests.empty()) write_request(e, options.requests);
     });
   }
   if (isatty(STDERR_FILENO) && &err == &std::cerr && !options.verbose) err << "\n";
@@ -214,6 +224,7 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   PlanSession session(
       scenario, search_options_with_overrides(scenario, options),
       options.motion ? std::optional<MotionOptions>(MotionOptions{}) : std::nullopt);
+  if (!options.requests.empty()) std::filesystem::create_directories(options.requests);
   std::optional<SnapshotWriter> snapshots;
   if (!options.snapshots.empty())
     snapshots.emplace(session, SnapshotOptions{options.snapshots, options.snapshots_rejected});

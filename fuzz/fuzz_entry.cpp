@@ -1,5 +1,6 @@
 // The libFuzzer entry point of one target; fuzz/CMakeLists.txt compiles it once per target with
-// STANCEPLAN_FUZZ_TARGET set to Scenario, Surfaces, Plan, Urdf or Srdf (see fuzz/fuzz_inputs.h).
+// STANCEPLAN_FUZZ_TARGET set to Scenario, Surfaces, Plan, Urdf, Srdf or Request (see
+// fuzz/fuzz_inputs.h).
 #include <unistd.h>
 
 #include <cstddef>

@@ -16,15 +16,17 @@
 #include "planner/collision/collision_model.h"
 #include "planner/contact/surface_file.h"
 #include "planner/io/plan_reader.h"
+#include "planner/io/request_file.h"
 #include "planner/io/scenario.h"
 #include "planner/model/kinematics.h"
 #include "planner/model/system.h"
 #include "planner/model/urdf_loader.h"
+#include "planner/solver/posture_solver.h"
 #include "planner/util/input_error.h"
 
 namespace stanceplan::fuzz {
 
-enum class Target { Scenario, Surfaces, Plan, Urdf, Srdf };
+enum class Target { Scenario, Surfaces, Plan, Urdf, Srdf, Request };
 
 struct Outcome {
   bool accepted = false;  // the loader took the input
@@ -57,6 +59,8 @@ inline std::filesystem::path input_path(Target target, const std::filesystem::pa
       return work / "input.urdf";
     case Target::Srdf:
       return work / "input.srdf";
+    case Target::Request:
+      return work / "input.bin";
   }
   return work / "input";
 }
@@ -109,6 +113,22 @@ inline void use_model(Model model) {
   (void)collision;
 }
 
+// A request file (stanceplan replay) read, then solved for a few iterations on the scene the seeds
+// were written for (the untuned side-step: the humanoid on the floor): a request that does not fit
+// it is refused by the solver's checks (std::invalid_argument), as replay refuses it.
+inline void replay_request(const std::filesystem::path& path) {
+  static const Scenario scenario =
+      load_scenario((source_dir() / "scenarios" / "untuned" / "side_step.yaml").string());
+  const PostureRequest request = read_request_file(path.string());
+  SolverOptions options = scenario.solver;
+  options.max_iterations = 3;
+  try {
+    (void)PostureSolver(scenario.scene, options).solve(request);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path.string() + ": does not fit the scene: " + e.what());
+  }
+}
+
 inline Outcome run_one(Target target, std::string_view bytes, const std::filesystem::path& work) {
   const std::filesystem::path path = input_path(target, work);
   write_bytes(path, bytes);
@@ -141,6 +161,9 @@ inline Outcome run_one(Target target, std::string_view bytes, const std::filesys
                                    path.string()));
         break;
       }
+      case Target::Request:
+        replay_request(path);
+        break;
       case Target::Srdf: {
         // The loader, then what the collision model does with its pairs.
         CollisionOptions options;

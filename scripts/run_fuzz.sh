@@ -7,13 +7,13 @@
 # FUZZ_SEED (default 1) fixes libFuzzer's mutations, so that a run from a fresh corpus-out folder
 # replays the same inputs as the last one (CI's short run is a regression gate, not a lottery);
 # hunt for new faults with FUZZ_SEED=0 (random) and a longer FUZZ_SECONDS.
-# Usage: scripts/run_fuzz.sh [TARGET...]  (default: scenario surfaces plan urdf srdf)
+# Usage: scripts/run_fuzz.sh [TARGET...]  (default: scenario surfaces plan urdf srdf request)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scenario surfaces plan urdf srdf)
+[ ${#targets[@]} -eq 0 ] && targets=(scenario surfaces plan urdf srdf request)
 
 CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DSTANCEPLAN_FUZZ=ON "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG" \
   -DSTANCEPLAN_BUILD_TESTS=OFF -DSTANCEPLAN_BUILD_BENCHMARKS=OFF >/dev/null

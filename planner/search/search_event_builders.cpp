@@ -1,5 +1,7 @@
 #include "planner/search/search_event_builders.h"
 
+#include <memory>
+
 namespace stanceplan {
 
 // A node's event carries the stance as the node realised it: the contacts with the ones that
@@ -59,6 +61,7 @@ SearchEvent candidate_event(int parent, const Stance& stance, bool add, const Co
   e.iterations = solved.iterations;
   e.torques = solved.torques;
   e.residuals = solved.residuals;
+  e.request = std::make_shared<const PostureRequest>(request);
   return e;
 }
 

@@ -6,11 +6,13 @@
 #include <condition_variable>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "planner/contact/contact.h"
+#include "planner/solver/posture_request.h"
 #include "planner/solver/posture_result.h"
 
 namespace stanceplan {
@@ -41,8 +43,11 @@ struct SearchEvent {
   int iterations = 0;
   std::vector<Eigen::VectorXd> torques;     // per entity (empty for entities without dofs)
   std::map<std::string, double> residuals;  // candidates: worst violation per family
-  int milestone = 0;                        // the milestone index targeted after this event
-  int nodes = 0;                            // tree size after this event
+  // Candidates: the solve's request, to solve it again alone (stanceplan plan --requests, then
+  // stanceplan replay).
+  std::shared_ptr<const PostureRequest> request;
+  int milestone = 0;  // the milestone index targeted after this event
+  int nodes = 0;      // tree size after this event
 };
 
 using SearchObserver = std::function<void(const SearchEvent&)>;

@@ -54,13 +54,17 @@ class Reader {
   }
   std::string text() {
     const auto n = pod<uint64_t>();
-    if (at_ + n > bytes_.size()) throw std::runtime_error("solver pool: truncated message");
+    if (n > bytes_.size() - at_) throw std::runtime_error("solver pool: truncated message");
     std::string s = bytes_.substr(at_, n);
     at_ += n;
     return s;
   }
   Eigen::VectorXd vector() {
     const auto n = pod<uint64_t>();
+    // A count the bytes left cannot hold is a malformed message (a file cut short or from another
+    // build: planner/io/request_file.h), not an allocation to try.
+    if (n > (bytes_.size() - at_) / sizeof(double))
+      throw std::runtime_error("solver pool: truncated message");
     Eigen::VectorXd v(n);
     for (uint64_t i = 0; i < n; ++i) v[i] = pod<double>();
     return v;

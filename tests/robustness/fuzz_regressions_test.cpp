@@ -76,6 +76,9 @@ TEST(FuzzRegressions, UrdfInputsEndCleanly) {
 TEST(FuzzRegressions, SrdfInputsEndCleanly) {
   replay(Target::Srdf, "srdf");
 }
+TEST(FuzzRegressions, RequestInputsEndCleanly) {
+  replay(Target::Request, "request");
+}
 
 // The seeds themselves load (so the fuzzers start from valid inputs, and the work folder layout
 // resolves their relative paths).
@@ -87,7 +90,8 @@ TEST(FuzzRegressions, TheSeedsAreAccepted) {
       {Target::Surfaces, "assets/robots/humanoid/humanoid.surfaces.yaml"},
       {Target::Plan, "fuzz/corpus/plan/walk_3_steps.json"},
       {Target::Urdf, "assets/robots/humanoid/humanoid.urdf"},
-      {Target::Srdf, "fuzz/corpus/srdf/humanoid.srdf"}};
+      {Target::Srdf, "fuzz/corpus/srdf/humanoid.srdf"},
+      {Target::Request, "fuzz/corpus/request/side_step_add.bin"}};
   for (const auto& [target, seed] : seeds) {
     const fuzz::Outcome outcome = fuzz::run_one(target, read_bytes(test::source_path(seed)), work);
     EXPECT_TRUE(outcome.accepted) << seed << ": " << outcome.error;

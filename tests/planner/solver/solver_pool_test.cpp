@@ -114,5 +114,24 @@ TEST_F(Pool, MalformedRequestsThrowInTheCallingProcess) {
   EXPECT_THROW(pool.solve_all(reqs), std::invalid_argument);
 }
 
+// Bytes from a file (planner/io/request_file.h) may be anything: a count that the bytes left
+// cannot hold is a truncated message, never an allocation of that size.
+TEST(WireFormat, ACountLargerThanTheBytesLeftIsATruncatedMessage) {
+  PostureRequest request;
+  request.q_init = Eigen::VectorXd::Zero(3);
+  std::string bytes = serialize(request);
+  // The first vector (q_init) follows the contact and approaching counts: find its count, 3.
+  const uint64_t three = 3, huge = uint64_t(1) << 60;
+  const size_t at = bytes.find(std::string(reinterpret_cast<const char*>(&three), 8));
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at, 8, std::string(reinterpret_cast<const char*>(&huge), 8));
+  try {
+    deserialize_request(bytes);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "solver pool: truncated message");
+  }
+}
+
 }  // namespace
 }  // namespace stanceplan
