@@ -39,7 +39,9 @@ struct SearchOptions {
   int max_retries = 2;
   // A candidate that failed its first attempt from the same stance, posture and relative placement
   // of its surfaces is deferred to backtracking instead of being solved at once (failure_memo.h; a
-  // heuristic: it orders, never prunes).
+  // heuristic: it orders, never prunes). So are, once an addition failed from a node, that node's
+  // other additions of a surface of the same link on the same partner (other facets of one body:
+  // the untuned dual-arm hand-over 115 -> 103 calls, no other scenario changed).
   bool defer_repeated_failures = true;
   // Lazy expansion: a node's candidates are solved this many at a time, in order; the node stays
   // open with the rest, ranked by its cost plus its next candidate's support share, so the search

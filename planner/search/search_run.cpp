@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <iterator>
 #include <sstream>
 #include <utility>
 
@@ -177,6 +178,8 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
       }
     } else {
       if (a.attempt == 0) remember_failure(a);
+      if (a.attempt == 0 && options_.defer_repeated_failures && a.candidate.add)
+        defer_other_facets(a);
       if (a.attempt < options_.max_retries) {
         const bool towards_goal = a.candidate.add && goal_.find(a.candidate.contact) >= 0;
         (towards_goal ? urgent_ : retries_)
@@ -193,6 +196,27 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
     }
   }
   return std::nullopt;
+}
+
+// An addition failed its first attempt: the node's other pending additions of a surface of the
+// same link on the same partner surface (another facet of the cylinder on platform B while both
+// arms hold it) wait for backtracking (SearchOptions::defer_repeated_failures); a node left with
+// none leaves the open list, so that it is not expanded anew with them.
+void StanceSearch::Run::defer_other_facets(const Attempt& failed) {
+  if (size_t(failed.node) >= pending_.size()) return;
+  const Scene& scene = problem_.scene;
+  const Contact& c = failed.candidate.contact;
+  const int link = scene.surfaces.get(c.s1).link;
+  std::deque<Attempt>& pending = pending_[size_t(failed.node)];
+  const auto same = [&](const Attempt& a) {
+    const Contact& o = a.candidate.contact;
+    return a.candidate.add && o.s2 == c.s2 && o.s1.entity == c.s1.entity &&
+           scene.surfaces.get(o.s1).link == link;
+  };
+  std::copy_if(pending.begin(), pending.end(), std::back_inserter(retries_), same);
+  pending.erase(std::remove_if(pending.begin(), pending.end(), same), pending.end());
+  if (pending.empty())
+    open_.erase(std::remove(open_.begin(), open_.end(), failed.node), open_.end());
 }
 
 // A candidate failed its first attempt (from the node's own configuration): remembered with the

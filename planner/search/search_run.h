@@ -53,6 +53,7 @@ class StanceSearch::Run {
                                            const std::vector<PostureRequest>& requests,
                                            const std::vector<PostureResult>& results);
   void remember_failure(const Attempt& attempt);
+  void defer_other_facets(const Attempt& failed);
   // The goal reached at `goal`: the plan, once every transition on its path has passed the
   // transition check (lazy validation, stance_search.h); nullopt when one failed (its node was
   // dropped) and the search goes on.
