@@ -66,10 +66,10 @@ bool StanceSearch::Run::is_goal(const SearchNode& node) const {
 // Loop avoidance: the same stance at the same placements is already a node. A dropped node (its
 // transition has no motion) only blocks the same transition, from the same parent: reached from
 // another node, the stance is a new transition, which may have a motion.
-bool StanceSearch::Run::already_in_tree(const SearchNode& node) const {
-  const std::vector<Placement>& placements = node.placements;
+bool StanceSearch::Run::in_tree(const Stance& stance, const std::vector<Placement>& placements,
+                                int parent) const {
   for (const SearchNode& n : tree_) {
-    if (!(n.stance() == node.stance()) || (n.dropped && n.parent != node.parent)) continue;
+    if (!(n.stance() == stance) || (n.dropped && n.parent != parent)) continue;
     bool same = true;
     for (size_t i = 0; i < placements.size() && same; ++i)
       same = same_placement(n.placements[i], placements[i], options_);
@@ -78,25 +78,21 @@ bool StanceSearch::Run::already_in_tree(const SearchNode& node) const {
   return false;
 }
 
-// A removal keeps every other contact at its placement, so its child is a node of the tree when
-// one has the child's stance with those placements (not a dropped one: it blocks only its own
-// parent's transition): the solve would end "already in the tree" whatever its posture. Removing
-// the contact the node itself added gives back its parent.
+bool StanceSearch::Run::already_in_tree(const SearchNode& node) const {
+  return in_tree(node.stance(), node.placements, node.parent);
+}
+
+// A removal keeps every other contact at its placement, so its child's stance and placements are
+// known before the solve: when they are a node's, the solve would end "already in the tree"
+// whatever its posture (removing the contact the node itself added gives back its parent).
 bool StanceSearch::Run::removal_reaches_a_node(const SearchNode& node, const Candidate& c) const {
   if (c.add) return false;
   const Stance& from = node.stance();
   const Stance next = from.without(from.find(c.contact));
-  for (const SearchNode& m : tree_) {
-    if (m.dropped || !(m.stance() == next)) continue;
-    bool same = true;
-    for (size_t k = 0; k < from.contacts().size() && same; ++k) {
-      const int i = m.stance().find(from.contacts()[k]);
-      same = from.contacts()[k].same_surfaces(c.contact) ||
-             (i >= 0 && same_placement(m.placements[size_t(i)], node.placements[k], options_));
-    }
-    if (same) return true;
-  }
-  return false;
+  std::vector<Placement> placements;  // in the child's stance order, as make_node lists them
+  for (const Contact& kept : next.contacts())
+    placements.push_back(node.placements[size_t(from.find(kept))]);
+  return in_tree(next, placements, node.id);
 }
 
 // Fewest contacts from the goal's stance, then the lowest cost.

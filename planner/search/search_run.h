@@ -77,6 +77,7 @@ class StanceSearch::Run {
   double milestone_tolerance(int m) const;
   double cost(const SearchNode& node) const;
   bool is_goal(const SearchNode& node) const;
+  bool in_tree(const Stance& stance, const std::vector<Placement>& placements, int parent) const;
   bool already_in_tree(const SearchNode& node) const;
   bool removal_reaches_a_node(const SearchNode& node, const Candidate& c) const;
   int closest() const;
