@@ -37,13 +37,15 @@ inline std::filesystem::path source_dir() {
   return STANCEPLAN_SOURCE_DIR;
 }
 
-// Prepares `work`: work/assets links to the project's assets.
+// Prepares `work`: work/assets links to this source tree's assets. A folder of the same name may
+// be left from an earlier process with the same id (ids are reused), its link dangling or pointing
+// at another checkout: the link is made anew.
 inline void prepare_work_dir(const std::filesystem::path& work) {
   namespace fs = std::filesystem;
   for (const char* sub : {"scenarios", "fuzz/corpus/plan"}) fs::create_directories(work / sub);
   std::error_code ec;
-  if (!fs::exists(work / "assets", ec))
-    fs::create_directory_symlink(source_dir() / "assets", work / "assets");
+  fs::remove(work / "assets", ec);
+  fs::create_directory_symlink(source_dir() / "assets", work / "assets");
 }
 
 // Where an input of `target` is written inside the work folder (the depth the seeds expect).
