@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "planner/collision/signed_distance.h"
@@ -67,6 +68,12 @@ std::vector<PairRule> pair_rules(const Problem& problem, const GuideOptions& opt
       const int pair = model.find_pair(c.contact.s1.entity, s1.link, c.contact.s2.entity, s2.link);
       if (pair >= 0) rules[size_t(pair)] = PairRule::Touch;
     }
+  // The links of the stances' contacts on floating robots: the task's supporting limbs.
+  std::set<std::pair<int, int>> stance_links;
+  for (const auto* stance : {&problem.initial_stance, &problem.goal_stance})
+    for (const StanceContact& c : *stance)
+      for (SurfaceRef ref : {c.contact.s1, c.contact.s2})
+        stance_links.insert({ref.entity, scene.surfaces.get(ref).link});
   for (size_t p = 0; p < rules.size(); ++p) {
     const CollisionLink& a = model.links()[size_t(model.pairs()[p].a)];
     const CollisionLink& b = model.links()[size_t(model.pairs()[p].b)];
@@ -76,6 +83,7 @@ std::vector<PairRule> pair_rules(const Problem& problem, const GuideOptions& opt
     }
     for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
       if (scene.system.entity(x.entity).kind == EntityKind::FloatingRobot &&
+          stance_links.count({x.entity, x.link}) &&
           may_touch(scene, x.entity, x.link, y.entity, y.link, options.contact_pairs))
         rules[p] = PairRule::Ignored;
       if (scene.system.entity(x.entity).kind == EntityKind::FixedRobot &&

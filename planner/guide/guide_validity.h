@@ -5,10 +5,14 @@
 // condition (the trunk clear of obstacles, a support within reach of a limb):
 //  - the trunk collision-free with a clearance: every candidate collision pair of the scene keeps
 //    GuideOptions::clearance, except
-//    - a floating robot's links that carry a contact-capable surface (its limbs: soles, shanks,
-//      hands) with the links of other entities carrying a surface they may touch (the contact
-//      pairs): not checked, as RBPRM checks only the trunk and lets the limbs find their contacts
-//      (without this the feet, interpolated rigidly, cannot pass a stair's riser);
+//    - a floating robot's links that carry a surface of a contact of the initial or goal stance
+//      (the task's supporting limbs: soles, thighs, forearms) with the links of other entities
+//      carrying a surface they may touch (the contact pairs): not checked, as RBPRM checks only
+//      the trunk and lets the limbs find their contacts (without this the feet, interpolated
+//      rigidly, cannot pass a stair's riser). Only those links: with every robot surface offered
+//      every surface of a room (contact pairs [robot/*, env/*]), exempting every link that
+//      carries a surface let the shanks pass through a chair's seat and the guide lead the robot
+//      across the chair, where no step can follow;
 //    - a fixed robot's moving links (arm, fingers; not its base or palm) with an object it may
 //      touch (a carrier: its arm moves with the object, the guide plans the object's way, not
 //      the arm's);

@@ -54,6 +54,31 @@ TEST(GuideValidityRule, StandingIsValidSinkingOrFlyingIsNot) {
             "robot: no contact-capable surface within 0.45 m of a support");
 }
 
+// With every robot surface offered every surface of the room (contact pairs [robot/*, env/*]),
+// only the links of the task's contacts (soles, thighs, forearms) may pass through the room's
+// links: standing over the chair's seat puts the shanks in it, which is not valid, and the computed
+// guide walks around the chair, as it does with the desk's own contact pairs.
+TEST(GuideValidityRule, OnlyTheTasksSupportingLinksMayPassThroughTheRoom) {
+  Scenario s = guide_free("desk.yaml");
+  s.guide.contact_pairs = {{"robot/*", "env/*"}};
+  GuideValidity validity(s, s.initial_configuration, s.initial_configuration, s.guide);
+  Eigen::VectorXd q = s.initial_configuration;
+  EXPECT_TRUE(validity.valid(q)) << validity.why_invalid(q);
+  q.head<2>() << 1.52, -0.1;  // standing over the seat (x 1.295 to 1.745 m, y within 0.225 m)
+  EXPECT_FALSE(validity.valid(q));
+  EXPECT_THAT(validity.why_invalid(q), ::testing::HasSubstr("- env/chair"));
+
+  const ComputedGuide g = compute_guide(s, s.guide);
+  ASSERT_EQ(g.status, GuideStatus::Computed) << g.message;
+  for (const auto* list : {&g.path, &g.milestone_configurations})
+    for (const Eigen::VectorXd& c : *list) {
+      if (c[2] < 0.85) continue;  // seated or sitting down: the goal is over the seat
+      const bool over_seat = c[0] > 1.295 && c[0] < 1.745 && std::abs(c[1]) < 0.225;
+      EXPECT_FALSE(over_seat) << "standing waist over the chair's seat at "
+                              << c.head<3>().transpose();
+    }
+}
+
 // Milestones at most `spacing` apart (base travel, a turn counted 0.5 m per radian), the last at
 // the goal posture; positions only (a robot's heading is not stated), nothing else.
 TEST(GuidePlanner, MilestonesAreSpacedAlongThePathAndEndAtTheGoalPosture) {
