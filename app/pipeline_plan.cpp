@@ -112,7 +112,9 @@ std::function<void(const SearchEvent&)> event_reporter(const Scenario& scenario,
             << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " ("
             << std::fixed << std::setprecision(1) << e.time_ms << " ms, " << e.iterations
             << " iterations)";
-      if (e.kind == SearchEventKind::MotionFailed) err << ": " << e.message;
+      if (e.kind == SearchEventKind::MotionFailed ||
+          (e.kind == SearchEventKind::Milestone && !e.message.empty()))
+        err << ": " << e.message;
       err << "\n";
     } else if (live) {
       err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones

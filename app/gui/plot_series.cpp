@@ -50,9 +50,10 @@ SearchSeries search_series(const std::vector<SearchEvent>& events) {
     const long index = static_cast<long>(i);
     if (e.kind == SearchEventKind::Candidate) add_candidate(s, e, index);
     if (e.kind == SearchEventKind::Milestone || e.kind == SearchEventKind::PlanFound)
-      s.milestones_reached.points.push_back(
-          {double(e.number), double(e.milestone), index,
-           e.kind == SearchEventKind::PlanFound ? "goal reached" : "milestone reached"});
+      s.milestones_reached.points.push_back({double(e.number), double(e.milestone), index,
+                                             e.kind == SearchEventKind::PlanFound ? "goal reached"
+                                             : e.message.empty() ? "milestone reached"
+                                                                 : "milestone skipped"});
     add_milestone_target(s.milestone_target, e, index);
   }
   return s;

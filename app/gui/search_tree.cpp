@@ -43,7 +43,8 @@ void SearchTree::add(const SearchEvent& event, size_t index) {
       if (node(event.node) != nullptr) ++nodes_[event.node].expansions;
       break;
     case SearchEventKind::Milestone:
-      if (node(event.node) != nullptr)
+      // A skipped milestone (its message says so) was reached by no node.
+      if (node(event.node) != nullptr && event.message.empty())
         nodes_[event.node].milestone = std::max(nodes_[event.node].milestone, event.milestone);
       break;
     case SearchEventKind::PlanFound:

@@ -597,17 +597,30 @@ class ScenarioReader {
 
   void read_search(const YAML::Node& node, Scenario& s) const {
     if (!node) return;
-    expect_keys(node, "search", {"max_nodes",           "time_limit",
-                                 "milestone_tolerance", "threads",
-                                 "contact_reach",       "self_contacts",
-                                 "placement_tolerance", "orientation_tolerance",
-                                 "stance_weight",       "max_retries",
-                                 "contact_pairs",       "last_contacts",
-                                 "min_contacts",        "defer_repeated_failures",
-                                 "expansion_batch",     "order_candidates",
-                                 "progress_budget",     "guide_seed",
-                                 "guide_spacing",       "guide_max_checks",
-                                 "guide_time_limit",    "batch_margin"});
+    expect_keys(node, "search",
+                {"max_nodes",
+                 "time_limit",
+                 "milestone_tolerance",
+                 "threads",
+                 "contact_reach",
+                 "self_contacts",
+                 "placement_tolerance",
+                 "orientation_tolerance",
+                 "stance_weight",
+                 "max_retries",
+                 "contact_pairs",
+                 "last_contacts",
+                 "min_contacts",
+                 "defer_repeated_failures",
+                 "expansion_batch",
+                 "order_candidates",
+                 "progress_budget",
+                 "guide_seed",
+                 "guide_spacing",
+                 "guide_max_checks",
+                 "guide_time_limit",
+                 "batch_margin",
+                 "skip_unreached_milestones"});
     if (node["contact_pairs"])
       read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"])
@@ -631,6 +644,9 @@ class ScenarioReader {
     if (node["defer_repeated_failures"])
       s.search.defer_repeated_failures =
           boolean(node["defer_repeated_failures"], "search.defer_repeated_failures");
+    if (node["skip_unreached_milestones"])
+      s.search.skip_unreached_milestones =
+          boolean(node["skip_unreached_milestones"], "search.skip_unreached_milestones");
     if (node["expansion_batch"])
       s.search.expansion_batch = integer(node["expansion_batch"], "search.expansion_batch", 0);
     if (node["batch_margin"])

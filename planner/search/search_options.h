@@ -43,6 +43,12 @@ struct SearchOptions {
   // other additions of a surface of the same link on the same partner (other facets of one body:
   // the untuned dual-arm hand-over 115 -> 103 calls, no other scenario changed).
   bool defer_repeated_failures = true;
+  // When every stance was tried and no node came within tolerance of the targeted milestone, the
+  // search aims at the next one instead of giving up (every node is expanded again for it; a
+  // Milestone event with a message says which was skipped). The guide is a heuristic: a milestone
+  // sampled between two phases (a crouch over a seat with the soles only, before the thighs are
+  // offered) may have no balanced posture near it. The last milestone is never skipped.
+  bool skip_unreached_milestones = true;
   // Lazy expansion: a node's candidates are solved this many at a time, in order; the node stays
   // open with the rest, ranked by its cost plus its next candidate's support share, so the search
   // moves on as soon as a child is better than it. 0 solves every candidate of an expansion at

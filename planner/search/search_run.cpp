@@ -3,6 +3,7 @@
 #include "planner/search/search_run.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iterator>
 #include <sstream>
@@ -128,10 +129,36 @@ std::optional<SearchResult> StanceSearch::Run::next_batch(std::vector<Attempt>& 
     batch = std::move(*expanded);
   } else if (!retries_.empty()) {
     take_retries(batch);
-  } else if (!reopen_stale(expanded_for_, t_, open_)) {
+  } else if (!reopen_stale(expanded_for_, t_, open_) && !skip_milestone()) {
     return give_up(PlanStatus::Exhausted, "every reachable stance was tried");
   }
   return std::nullopt;
+}
+
+// Every stance tried and the targeted milestone still out of reach: aim at the next one, every
+// node open again (SearchOptions::skip_unreached_milestones). Published as a Milestone event at
+// the node nearest to the skipped milestone, with a message.
+bool StanceSearch::Run::skip_milestone() {
+  if (!options_.skip_unreached_milestones || t_ + 1 >= guide_.size() || tree_.empty()) return false;
+  int nearest = -1;
+  double nearest_distance = INFINITY;
+  for (const SearchNode& n : tree_) {
+    const double d = n.dropped ? INFINITY : guide_.distance_to(n.q(), t_);
+    if (d < nearest_distance) nearest_distance = d, nearest = n.id;
+  }
+  if (nearest < 0) return false;
+  std::ostringstream why;
+  why << "skipped milestone " << t_ + 1 << ": every stance was tried and the nearest node is "
+      << std::fixed << std::setprecision(3) << nearest_distance << " from it (tolerance "
+      << milestone_tolerance(t_) << ")";
+  ++t_;
+  ++result_.milestones_skipped;
+  SearchEvent e =
+      node_event(SearchEventKind::Milestone, tree_[size_t(nearest)], t_, int(tree_.size()));
+  e.message = why.str();
+  search_.publish(e);  // a cancel ends the run at the next budget check
+  reopen_stale(expanded_for_, t_, open_);
+  return true;
 }
 
 // Backtracking with lazy expansion: the retries most likely to carry their share first

@@ -82,6 +82,7 @@ class StanceSearch::Run {
   bool removal_reaches_a_node(const SearchNode& node, const Candidate& c) const;
   int closest() const;
   void advance_milestones();
+  bool skip_milestone();
   // A node's rank in the open list: its cost, plus, once it is expanded for the targeted
   // milestone, the support share of its next pending candidate (both in metres).
   double priority(int n) const;

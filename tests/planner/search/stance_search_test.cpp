@@ -110,6 +110,35 @@ TEST_F(Walk, SamePlanBitForBitForOneAndTwoThreadsAndTwoRuns) {
                              sizeof(double) * two.plan.steps[i].q.size()));
 }
 
+// A milestone no posture comes near (the waist 0.5 m higher than standing allows, on the walk's
+// third milestone): once every stance was tried, the search aims at the next milestone and finds
+// the plan, saying which one it skipped; without skipping, the search ends exhausted.
+TEST(Search, AMilestoneOutOfReachIsSkippedOnceEveryStanceWasTried) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  ASSERT_GE(scenario.milestones.size(), 4u);
+  scenario.milestones[2][2] += 0.5;
+  SearchOptions options = scenario.search;
+  options.threads = 1;
+  std::vector<SearchEvent> skips;
+  StanceSearch search(scenario, options);
+  search.set_observer([&](const SearchEvent& e) {
+    if (e.kind == SearchEventKind::Milestone && !e.message.empty()) skips.push_back(e);
+  });
+  const SearchResult result = search.run();
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  EXPECT_EQ(result.milestones_skipped, 1);
+  ASSERT_EQ(skips.size(), 1u);
+  EXPECT_THAT(skips[0].message,
+              ::testing::StartsWith("skipped milestone 3: every stance was tried and the nearest "
+                                    "node is "));
+  EXPECT_EQ(skips[0].milestone, 3);  // the milestone now targeted (0-based): the fourth
+
+  options.skip_unreached_milestones = false;
+  const SearchResult stuck = StanceSearch(scenario, options).run();
+  EXPECT_EQ(stuck.status, PlanStatus::Exhausted) << stuck.message;
+  EXPECT_EQ(stuck.milestones_skipped, 0);
+}
+
 TEST(Search, AnUnreachableGoalEndsWithAReasonInsideItsBudget) {
   const Scenario scenario =
       load_scenario(test::source_path("tests/data/high_platform/unreachable.yaml"));
