@@ -97,10 +97,34 @@ std::vector<StanceSearch::Attempt> StanceSearch::Run::take_pending(int n) {
   const size_t count = options_.expansion_batch > 0
                            ? std::min(pending.size(), size_t(options_.expansion_batch))
                            : pending.size();
-  std::vector<Attempt> batch(pending.begin(), pending.begin() + long(count));
-  pending.erase(pending.begin(), pending.begin() + long(count));
+  // In order, but one addition per class of facets (same link, same partner surface) while
+  // defer_repeated_failures is on: the others wait for its outcome (if it fails, they go to
+  // backtracking: defer_other_facets).
+  std::vector<Attempt> batch;
+  std::deque<Attempt> rest;
+  for (Attempt& a : pending) {
+    const bool twin = options_.expansion_batch > 0 && options_.defer_repeated_failures &&
+                      std::any_of(batch.begin(), batch.end(),
+                                  [&](const Attempt& b) { return same_facets(a, b); });
+    if (batch.size() < count && !twin)
+      batch.push_back(std::move(a));
+    else
+      rest.push_back(std::move(a));
+  }
+  pending = std::move(rest);
   if (!pending.empty()) open_.push_back(n);
   return batch;
+}
+
+// Two additions of surfaces of one link on the same partner surface (two facets of the held
+// cylinder on platform B).
+bool StanceSearch::Run::same_facets(const Attempt& a, const Attempt& b) const {
+  if (!a.candidate.add || !b.candidate.add) return false;
+  const Contact& x = a.candidate.contact;
+  const Contact& y = b.candidate.contact;
+  const SurfaceSet& surfaces = problem_.scene.surfaces;
+  return x.s2 == y.s2 && x.s1.entity == y.s1.entity &&
+         surfaces.get(x.s1).link == surfaces.get(y.s1).link;
 }
 
 bool StanceSearch::Run::solves_alone(const std::deque<Attempt>& pending) const {

@@ -231,15 +231,8 @@ std::optional<SearchResult> StanceSearch::Run::take_results(
 // none leaves the open list, so that it is not expanded anew with them.
 void StanceSearch::Run::defer_other_facets(const Attempt& failed) {
   if (size_t(failed.node) >= pending_.size()) return;
-  const Scene& scene = problem_.scene;
-  const Contact& c = failed.candidate.contact;
-  const int link = scene.surfaces.get(c.s1).link;
   std::deque<Attempt>& pending = pending_[size_t(failed.node)];
-  const auto same = [&](const Attempt& a) {
-    const Contact& o = a.candidate.contact;
-    return a.candidate.add && o.s2 == c.s2 && o.s1.entity == c.s1.entity &&
-           scene.surfaces.get(o.s1).link == link;
-  };
+  const auto same = [&](const Attempt& a) { return same_facets(a, failed); };
   std::copy_if(pending.begin(), pending.end(), std::back_inserter(retries_), same);
   pending.erase(std::remove_if(pending.begin(), pending.end(), same), pending.end());
   if (pending.empty())

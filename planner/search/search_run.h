@@ -83,6 +83,7 @@ class StanceSearch::Run {
   int closest() const;
   void advance_milestones();
   bool skip_milestone();
+  bool same_facets(const Attempt& a, const Attempt& b) const;
   // A node's rank in the open list: its cost, plus, once it is expanded for the targeted
   // milestone, the support share of its next pending candidate (both in metres).
   double priority(int n) const;
