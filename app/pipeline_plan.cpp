@@ -18,6 +18,7 @@
 #include "app/collision_matrix_note.h"
 #include "app/exit_codes.h"
 #include "app/interrupt_handler.h"
+#include "app/live/event_record.h"
 #include "app/live/plan_session.h"
 #include "app/live/snapshot_writer.h"
 #include "app/model_warnings.h"
@@ -112,6 +113,9 @@ std::function<void(const SearchEvent&)> event_reporter(const Scenario& scenario,
             << to_string(e.status) << (e.accepted ? " accepted" : " rejected: " + e.message) << " ("
             << std::fixed << std::setprecision(1) << e.time_ms << " ms, " << e.iterations
             << " iterations)";
+      // Which contact, from which node: the stance above is the target's.
+      if (e.kind == SearchEventKind::Candidate && e.candidate_case != CandidateCase::None)
+        err << " · from node " << e.parent << ": " << event_change(scenario.scene, e);
       if (e.kind == SearchEventKind::MotionFailed ||
           (e.kind == SearchEventKind::Milestone && !e.message.empty()))
         err << ": " << e.message;

@@ -58,6 +58,13 @@ TEST(ReplayCommand, ACandidateReplaysAloneToTheResultItHadInTheSearch) {
   ASSERT_EQ(r.code, 0) << r.err;
   const std::vector<CandidateLine> lines = candidate_lines(r.err);
   ASSERT_GT(lines.size(), 1u);
+  // Each candidate line ends with the node it was tried from and the contact it adds or removes.
+  static const std::regex change(
+      R"(candidate node -?\d+ \{.*\} (add|remove) .* · from node \d+: \1 \S+ (on|from) \S+$)");
+  size_t named = 0;
+  std::istringstream err(r.err);
+  for (std::string text; std::getline(err, text);) named += std::regex_search(text, change);
+  EXPECT_EQ(named, lines.size()) << r.err;
   // One file per candidate that adds or removes a contact (the root, realised before the search
   // and listed without either, has none).
   size_t files = 0;
