@@ -33,9 +33,10 @@ struct SearchEvent {
   CandidateCase candidate_case = CandidateCase::None;
   Contact changed;                               // candidates: the contact added or removed
   PostureStatus status = PostureStatus::Solved;  // candidates
-  std::string message;                // candidates: why rejected; failure, motion failed: why
-  bool accepted = false;              // candidates: a new node was made
-  Eigen::VectorXd q;                  // the configuration (candidates: the solver's final iterate)
+  std::string message;    // candidates: why rejected; failure, motion failed: why; milestone:
+                          // why skipped (empty when a node reached it)
+  bool accepted = false;  // candidates: a new node was made
+  Eigen::VectorXd q;      // the configuration (candidates: the solver's final iterate)
   std::vector<PlanContact> contacts;  // touched at q, with which carry force
   std::vector<VertexForce> forces;    // VertexForce::contact indexes `contacts`
   double time_ms = 0.0;               // candidates: solver time
