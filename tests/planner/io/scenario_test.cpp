@@ -151,6 +151,15 @@ TEST_F(ScenarioFaults, TheBatchMarginIsANumber) {
             path_ + ":21: search.batch_margin: expected a number, found \"wide\"");
 }
 
+TEST_F(ScenarioFaults, SkippingUnreachedMilestonesIsOnUnlessTheFileSaysFalse) {
+  EXPECT_TRUE(SearchOptions{}.skip_unreached_milestones);
+  write(header() + stances() + "search:\n  skip_unreached_milestones: false\n");
+  EXPECT_FALSE(load_scenario(path_).search.skip_unreached_milestones);
+  EXPECT_THAT(error_of(header() + stances() + "search:\n  skip_unreached_milestones: maybe\n"),
+              ::testing::StartsWith(path_ + ":21: search.skip_unreached_milestones: expected true "
+                                            "or false"));
+}
+
 // The computed guide's budget is a whole number of validity checks; the old wall-clock field is
 // refused with the field to write instead (no number of seconds means the same on every machine).
 TEST_F(ScenarioFaults, TheGuideBudgetIsCountedInChecksNotSeconds) {
