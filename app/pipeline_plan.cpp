@@ -116,9 +116,7 @@ std::function<void(const SearchEvent&)> event_reporter(const Scenario& scenario,
       // Which contact, from which node: the stance above is the target's.
       if (e.kind == SearchEventKind::Candidate && e.candidate_case != CandidateCase::None)
         err << " · from node " << e.parent << ": " << event_change(scenario.scene, e);
-      if (e.kind == SearchEventKind::MotionFailed ||
-          (e.kind == SearchEventKind::Milestone && !e.message.empty()))
-        err << ": " << e.message;
+      if (e.kind == SearchEventKind::MotionFailed || skipped_milestone(e)) err << ": " << e.message;
       err << "\n";
     } else if (live) {
       err << "\rnodes " << e.nodes << "  milestone " << e.milestone << "/" << milestones

@@ -137,7 +137,7 @@ std::string event_action(const Scene& scene, const SearchEvent& e) {
     case SearchEventKind::Expansion:
       return "expansion of node " + std::to_string(e.node);
     case SearchEventKind::Milestone:
-      if (!e.message.empty()) return "milestone " + std::to_string(e.milestone) + " skipped";
+      if (skipped_milestone(e)) return "milestone " + std::to_string(e.milestone) + " skipped";
       return "reaches milestone " + std::to_string(e.milestone);
     case SearchEventKind::PlanFound:
       return "goal reached";

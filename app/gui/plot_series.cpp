@@ -52,8 +52,8 @@ SearchSeries search_series(const std::vector<SearchEvent>& events) {
     if (e.kind == SearchEventKind::Milestone || e.kind == SearchEventKind::PlanFound)
       s.milestones_reached.points.push_back({double(e.number), double(e.milestone), index,
                                              e.kind == SearchEventKind::PlanFound ? "goal reached"
-                                             : e.message.empty() ? "milestone reached"
-                                                                 : "milestone skipped"});
+                                             : skipped_milestone(e) ? "milestone skipped"
+                                                                    : "milestone reached"});
     add_milestone_target(s.milestone_target, e, index);
   }
   return s;

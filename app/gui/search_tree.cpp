@@ -43,8 +43,7 @@ void SearchTree::add(const SearchEvent& event, size_t index) {
       if (node(event.node) != nullptr) ++nodes_[event.node].expansions;
       break;
     case SearchEventKind::Milestone:
-      // A skipped milestone (its message says so) was reached by no node.
-      if (node(event.node) != nullptr && event.message.empty())
+      if (node(event.node) != nullptr && !skipped_milestone(event))
         nodes_[event.node].milestone = std::max(nodes_[event.node].milestone, event.milestone);
       break;
     case SearchEventKind::PlanFound:

@@ -45,7 +45,7 @@ std::string outcome(const SearchEvent& e, int milestones) {
       return text;
     }
     case SearchEventKind::Milestone:
-      if (!e.message.empty())  // skipped (SearchOptions::skip_unreached_milestones)
+      if (skipped_milestone(e))
         return "milestone " + std::to_string(e.milestone) + " of " + std::to_string(milestones) +
                " skipped · nearest node " + std::to_string(e.node);
       return "node " + std::to_string(e.node) + " reached milestone " +

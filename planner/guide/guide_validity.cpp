@@ -61,19 +61,16 @@ std::vector<PairRule> pair_rules(const Problem& problem, const GuideOptions& opt
   const Scene& scene = problem.scene;
   const CollisionModel& model = *scene.collision;
   std::vector<PairRule> rules(model.pairs().size(), PairRule::Clearance);
+  // The links of the stances' contacts (on floating robots: the task's supporting limbs).
+  std::set<std::pair<int, int>> stance_links;
   for (const auto* stance : {&problem.initial_stance, &problem.goal_stance})
     for (const StanceContact& c : *stance) {
       const Surface& s1 = scene.surfaces.get(c.contact.s1);
       const Surface& s2 = scene.surfaces.get(c.contact.s2);
       const int pair = model.find_pair(c.contact.s1.entity, s1.link, c.contact.s2.entity, s2.link);
       if (pair >= 0) rules[size_t(pair)] = PairRule::Touch;
+      stance_links.insert({{c.contact.s1.entity, s1.link}, {c.contact.s2.entity, s2.link}});
     }
-  // The links of the stances' contacts on floating robots: the task's supporting limbs.
-  std::set<std::pair<int, int>> stance_links;
-  for (const auto* stance : {&problem.initial_stance, &problem.goal_stance})
-    for (const StanceContact& c : *stance)
-      for (SurfaceRef ref : {c.contact.s1, c.contact.s2})
-        stance_links.insert({ref.entity, scene.surfaces.get(ref).link});
   for (size_t p = 0; p < rules.size(); ++p) {
     const CollisionLink& a = model.links()[size_t(model.pairs()[p].a)];
     const CollisionLink& b = model.links()[size_t(model.pairs()[p].b)];

@@ -51,6 +51,12 @@ struct SearchEvent {
   int nodes = 0;      // tree size after this event
 };
 
+// A Milestone event that no node reached: the search skipped it (its message says why,
+// SearchOptions::skip_unreached_milestones; its node is the one nearest to it).
+inline bool skipped_milestone(const SearchEvent& e) {
+  return e.kind == SearchEventKind::Milestone && !e.message.empty();
+}
+
 using SearchObserver = std::function<void(const SearchEvent&)>;
 
 // Holds the search between events while paused. The search calls pass() before publishing each

@@ -139,7 +139,7 @@ std::optional<SearchResult> StanceSearch::Run::next_batch(std::vector<Attempt>& 
 // node open again (SearchOptions::skip_unreached_milestones). Published as a Milestone event at
 // the node nearest to the skipped milestone, with a message.
 bool StanceSearch::Run::skip_milestone() {
-  if (!options_.skip_unreached_milestones || t_ + 1 >= guide_.size() || tree_.empty()) return false;
+  if (!options_.skip_unreached_milestones || t_ + 1 >= guide_.size()) return false;
   int nearest = -1;
   double nearest_distance = INFINITY;
   for (const SearchNode& n : tree_) {

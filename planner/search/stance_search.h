@@ -51,8 +51,8 @@ struct SearchResult {
   Plan plan;  // the sequence, when found
   std::vector<SearchNode> tree;
   int closest_node = -1;       // the node whose stance is closest to the goal's
-  int milestone = 0;           // milestones reached
-  int milestones_skipped = 0;  // SearchOptions::skip_unreached_milestones
+  int milestone = 0;           // the milestone targeted at the end: those reached or skipped
+  int milestones_skipped = 0;  // of those, skipped (SearchOptions::skip_unreached_milestones)
   int nodes_expanded = 0;
   int solver_calls = 0;
   double wall_time_s = 0.0;
