@@ -136,6 +136,10 @@ void add_replay(CLI::App& cli, ReplayOptions& options) {
   cmd->add_option("--max-iterations", options.max_iterations,
                   "Ipopt's iteration limit (default: the scenario's solver.max_iterations)")
       ->check(whole_number_in(1, 100000));
+  cmd->add_option("--progress-budget", options.progress_budget,
+                  "the progress budget's first iterations, 0 for none (default: the request's, "
+                  "the search's search.progress_budget)")
+      ->check(whole_number_in(0, 100000));
 }
 
 void add_guide(CLI::App& cli, GuideCommandOptions& options) {

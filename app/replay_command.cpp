@@ -14,7 +14,8 @@ namespace stanceplan::app {
 
 int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream&) {
   const Scenario scenario = load_scenario(options.scenario);
-  const PostureRequest request = read_request_file(options.request);
+  PostureRequest request = read_request_file(options.request);
+  if (options.progress_budget) request.progress_budget = *options.progress_budget;
   SolverOptions solver_options = scenario.solver;  // as the search's solver (stance_search.h)
   solver_options.print_level = options.print_level;
   if (options.max_iterations) solver_options.max_iterations = *options.max_iterations;

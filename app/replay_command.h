@@ -1,5 +1,6 @@
 #pragma once
-// `stanceplan replay SCENARIO.yaml REQUEST.bin [--print-level N] [--max-iterations N]`: solves one
+// `stanceplan replay SCENARIO.yaml REQUEST.bin [--print-level N] [--max-iterations N]
+// [--progress-budget N]`: solves one
 // candidate's request again, alone, as the search solved it (planner/io/request_file.h; the files
 // come from `stanceplan plan --requests DIR`): with Ipopt's own iteration log at --print-level 5,
 // or another iteration limit, to see why a candidate was rejected without the search around it.
@@ -14,6 +15,9 @@ struct ReplayOptions {
   std::string request;
   int print_level = 0;                // Ipopt's console output (5: per iteration)
   std::optional<int> max_iterations;  // default: the scenario's solver.max_iterations
+  // The progress budget (stall_monitor.h) in iterations, 0 for none; default: the request's (the
+  // search's search.progress_budget).
+  std::optional<int> progress_budget;
 };
 
 // 0 solved, 2 not solved (the solver's reason on `out`); InputError on bad input (a file that is

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -89,6 +90,19 @@ TEST(ReplayCommand, ACandidateReplaysAloneToTheResultItHadInTheSearch) {
   const test::CliResult short_run =
       test::run_cli({"replay", scenario, request_file(dir, first.event), "--max-iterations", "1"});
   EXPECT_THAT(short_run.out, HasSubstr("after 1 Ipopt iterations"));
+  // A candidate the progress budget stopped (the side-step's knees on the floor): without the
+  // budget it runs to the solver's iteration limit (100), its log then Ipopt's own end.
+  const auto stalled = std::find_if(lines.begin(), lines.end(), [](const CandidateLine& c) {
+    return c.status == "iteration_limit" && c.iterations < 100;
+  });
+  ASSERT_NE(stalled, lines.end()) << r.err;
+  const std::string request = request_file(dir, stalled->event);
+  EXPECT_THAT(test::run_cli({"replay", scenario, request}).out, HasSubstr("Stalled (no progress"));
+  const test::CliResult unbudgeted =
+      test::run_cli({"replay", scenario, request, "--progress-budget", "0"});
+  EXPECT_EQ(unbudgeted.code, 2);
+  EXPECT_THAT(unbudgeted.out, HasSubstr("after 100 Ipopt iterations"));
+  EXPECT_THAT(unbudgeted.out, HasSubstr("Maximum_Iterations_Exceeded"));
 }
 
 TEST(ReplayCommand, FilesThatAreNotRequestsOfThisScenarioAreRefusedWithTheFileNamed) {
