@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "bench/computed_guide.h"
 #include "planner/guide/guide_planner.h"
-#include "planner/io/guide_writer.h"
 #include "planner/io/scenario.h"
 #include "planner/search/stance_search.h"
 
@@ -62,15 +62,13 @@ void plan_time(benchmark::State& state, const std::string& file, bool computed) 
     Scenario s = load_scenario(scenario_path(file));
     double guide_s = 0.0;
     if (computed) {
-      const ComputedGuide guide = compute_guide(s, s.guide);
+      const ComputedGuide guide = bench::use_computed_guide(s);
       guide_s = guide.time_s;
       state.counters["guide_s"] = guide_s;
       if (guide.status != GuideStatus::Computed) {
         state.SkipWithError(guide.message.c_str());
         return;
       }
-      read_guide_section(s, guide_section(s.scene.system, guide.milestones), s.file);
-      if (s.search.last_contacts.empty()) s.search.last_contacts = guide.phases.last;
     }
     SearchOptions options = s.search;
     options.threads = 1;
