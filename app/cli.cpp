@@ -140,6 +140,9 @@ void add_replay(CLI::App& cli, ReplayOptions& options) {
                   "the progress budget's first iterations, 0 for none (default: the request's, "
                   "the search's search.progress_budget)")
       ->check(whole_number_in(0, 100000));
+  cmd->add_flag("--show-request", options.show_request,
+                "first print the request's contacts: fixed placements (x, y, theta in s2's "
+                "frame) or free with the E25 target, loaded or not");
 }
 
 void add_guide(CLI::App& cli, GuideCommandOptions& options) {

@@ -12,6 +12,33 @@
 
 namespace stanceplan::app {
 
+namespace {
+
+void print_placement(const char* what, const Placement& p, std::ostream& out) {
+  out << " " << what << " (" << p.x << ", " << p.y << ", " << p.theta << ")";
+}
+
+// What the solver was asked: each contact, s1 on s2, with its fixed placement (x, y in s2's frame,
+// theta; E10-E13) or free (case 1) with its E25 target, and whether it carries force.
+void print_request(const Scene& scene, const PostureRequest& request, std::ostream& out) {
+  out << std::fixed << std::setprecision(3);
+  for (const ContactTask& task : request.contacts) {
+    out << "contact " << scene.surfaces.id(scene.system, task.contact.s1) << " on "
+        << scene.surfaces.id(scene.system, task.contact.s2) << ":"
+        << (task.loaded ? " loaded" : " unloaded");
+    if (task.placement)
+      print_placement("placed at", *task.placement, out);
+    else
+      out << " free";
+    if (task.placement_target) print_placement("target", *task.placement_target, out);
+    if (task.standoff != 0.0) out << " standoff " << task.standoff;
+    out << "\n";
+  }
+  out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace
+
 int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream&) {
   const Scenario scenario = load_scenario(options.scenario);
   PostureRequest request = read_request_file(options.request);
@@ -20,6 +47,7 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream&) {
   solver_options.print_level = options.print_level;
   if (options.max_iterations) solver_options.max_iterations = *options.max_iterations;
   const PostureSolver solver(scenario.scene, solver_options);
+  if (options.show_request) print_request(scenario.scene, request, out);
   PostureResult result;
   try {
     result = solver.solve(request);

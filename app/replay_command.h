@@ -18,6 +18,7 @@ struct ReplayOptions {
   // The progress budget (stall_monitor.h) in iterations, 0 for none; default: the request's (the
   // search's search.progress_budget).
   std::optional<int> progress_budget;
+  bool show_request = false;  // print the request's contacts (placements, E25 targets) first
 };
 
 // 0 solved, 2 not solved (the solver's reason on `out`); InputError on bad input (a file that is

@@ -103,6 +103,16 @@ TEST(ReplayCommand, ACandidateReplaysAloneToTheResultItHadInTheSearch) {
   EXPECT_EQ(unbudgeted.code, 2);
   EXPECT_THAT(unbudgeted.out, HasSubstr("after 100 Ipopt iterations"));
   EXPECT_THAT(unbudgeted.out, HasSubstr("Maximum_Iterations_Exceeded"));
+  // What the solver was asked: the kept contact at its placement, the new one with its E25 target
+  // (free, or first tried at the goal's stated placement: the side-step's last step).
+  const test::CliResult shown = test::run_cli({"replay", scenario, request, "--show-request"});
+  EXPECT_THAT(shown.out,
+              ::testing::ContainsRegex(
+                  R"(contact robot/._sole on env/floor: loaded placed at \(-?[0-9.]+, )"));
+  EXPECT_THAT(
+      shown.out,
+      ::testing::ContainsRegex(
+          R"(contact robot/\S+ on env/floor: unloaded (free|placed at \([^)]*\)) target \()"));
 }
 
 TEST(ReplayCommand, FilesThatAreNotRequestsOfThisScenarioAreRefusedWithTheFileNamed) {
