@@ -33,17 +33,18 @@ GuideMilestone milestone_at(const GuideSpace& space, const Eigen::VectorXd& x) {
     // An object's orientation is part of its task (a ball turned in the hand); a robot's heading
     // follows its feet: stated, it pulls the solver's reference into turns that its stance cannot
     // make (the walk with a turn: no plan in 817 solver calls with headings, 44 without).
-    if (space.system().entity(e).kind == EntityKind::Object && space.turns(e)) {
-      const Eigen::Vector4d w = x.segment<4>(7 * int(k) + 3);
-      const Eigen::Matrix3d R = Eigen::Quaterniond(w[0], w[1], w[2], w[3]).normalized().matrix();
-      // R = Rz(yaw) Ry(pitch) Rx(roll), the scenario's base_rpy
-      root.rpy =
-          Eigen::Vector3d(std::atan2(R(2, 1), R(2, 2)), std::asin(std::clamp(-R(2, 0), -1.0, 1.0)),
-                          std::atan2(R(1, 0), R(0, 0)));
-    }
+    if (space.system().entity(e).kind == EntityKind::Object && space.turns(e))
+      root.rpy = base_rpy(x.segment<4>(7 * int(k) + 3));
     m.roots.push_back(root);
   }
   return m;
+}
+
+Eigen::Vector3d base_rpy(const Eigen::Vector4d& wxyz) {
+  const Eigen::Matrix3d R =
+      Eigen::Quaterniond(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).normalized().matrix();
+  return {std::atan2(R(2, 1), R(2, 2)), std::asin(std::clamp(-R(2, 0), -1.0, 1.0)),
+          std::atan2(R(1, 0), R(0, 0))};
 }
 
 }  // namespace stanceplan

@@ -3,10 +3,12 @@
 // from a scenario's `guide:` section: partial milestones stating the pose of each moving root
 // (its position; an object's orientation too when it turns between the two postures), nothing
 // else, but for the goal milestone, which states the robots' joints of the goal posture, the
-// approach's milestones (approach.h), which offer the contacts kept from the initial stance only,
-// and the posture change's stages (posture_stages.h), which state their joints and offer their
-// stance's contacts (the goal stage: every pair). Elsewhere the search offers search.contact_pairs,
-// and its candidate pruning (contact_reach) already keeps the surfaces out of reach out of it.
+// approach's milestones (approach.h), which offer the contacts kept from the initial stance only
+// (the last one, where the robot stands to change its posture, states its heading too), and the
+// posture change's stages (posture_stages.h), which state their whole posture (heading and joints)
+// and offer their stance's contacts (the goal stage: every pair). Elsewhere the search offers
+// search.contact_pairs, and its candidate pruning (contact_reach) already keeps the surfaces out of
+// reach out of it.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -43,5 +45,9 @@ std::vector<Eigen::VectorXd> points_along(const GuideSpace& space,
 
 // The milestone at a point of the space.
 GuideMilestone milestone_at(const GuideSpace& space, const Eigen::VectorXd& x);
+
+// A root's orientation as the scenario's base_rpy (roll, pitch, yaw: R = Rz(yaw) Ry(pitch)
+// Rx(roll)) from its quaternion (w, x, y, z) in a configuration.
+Eigen::Vector3d base_rpy(const Eigen::Vector4d& wxyz);
 
 }  // namespace stanceplan

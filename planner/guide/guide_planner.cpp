@@ -122,7 +122,9 @@ bool plan_leg(const Problem& problem, const Eigen::VectorXd& q_a, const Eigen::V
 // The approach's milestones offer the kept contacts only, and an approaching robot's base keeps
 // the height it has over them (its kept contacts stay on the surfaces they start on): evenly
 // from the initial height to the approach's, not the path's samples' (which wander 0.1 m up and
-// down, the tolerance of a milestone).
+// down, the tolerance of a milestone). The last one, where the robot stands to change its
+// posture, states the approach's heading: reached turned, the robot sits down askew (the
+// guide-free desk started 2 cm to its left: its feet 0.1 rad off, no plan).
 void walk_level(const Problem& problem, const Approach& approach, ComputedGuide& guide) {
   const System& system = problem.scene.system;
   std::vector<GuideMilestone>& milestones = guide.milestones;
@@ -135,6 +137,11 @@ void walk_level(const Problem& problem, const Approach& approach, ComputedGuide&
         const int z = system.offset(root.entity) + Entity::kBasePosition + 2;
         root.position.z() = (1.0 - t) * problem.initial_configuration[z] + t * approach.q[z];
         guide.milestone_configurations[k][z] = root.position.z();
+        if (k + 1 == milestones.size()) {
+          const int w = system.offset(root.entity) + Entity::kBaseQuaternion;
+          root.rpy = base_rpy(approach.q.segment<4>(w));
+          guide.milestone_configurations[k].segment<4>(w) = approach.q.segment<4>(w);
+        }
       }
   }
 }
@@ -197,16 +204,19 @@ void offer_grasps(const Problem& problem, const GuideOptions& options, const Han
   for (GuideMilestone& m : guide.milestones) m.contacts = offers;
 }
 
-// A stage's milestone (posture_stages.h): the roots of the milestones before it, at the stage's
-// posture, a robot's joints stated (the solver's reference there is the stage's posture: a robot
-// that crouches is not pulled towards its standing legs), and the stage's contacts offered.
+// A stage's milestone (posture_stages.h): the roots of the milestones before it at the stage's
+// whole posture, position, heading and a robot's joints (the solver's reference there is the
+// stage's posture: a robot that crouches is not pulled towards its standing legs; and a node
+// turned from it is not the stage: without the heading, the guide-free desk's crouch counted as
+// reached with the feet turned by 0.1-0.4 rad, and the first thigh landed askew in the middle of
+// the seat, leaving no room for the second), and the stage's contacts offered.
 void append_stage(const System& system, const PostureStage& stage, ComputedGuide& guide) {
   GuideMilestone m;
   m.roots = guide.milestones.back().roots;
   for (GuideMilestone::Root& root : m.roots) {
     const int o = system.offset(root.entity);
     root.position = stage.q.segment<3>(o + Entity::kBasePosition);
-    root.rpy.reset();
+    root.rpy = base_rpy(stage.q.segment<4>(o + Entity::kBaseQuaternion));
   }
   state_goal_joints(system, stage.q, m);
   m.contacts = stage.offered;

@@ -3,8 +3,11 @@
 // each stage a solved posture placed where the seated one has its contacts.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "planner/guide/contact_phases.h"
 #include "planner/guide/goal_posture.h"
+#include "planner/guide/guide_milestones.h"
 #include "planner/guide/guide_planner.h"
 #include "planner/guide/posture_stages.h"
 #include "planner/io/scenario.h"
@@ -77,6 +80,20 @@ TEST(GuidePostureStages, TheDesksGuideEndsWithTheStages) {
   ASSERT_EQ(int(g.milestones.size()), g.approach_milestones + g.stages);
   for (size_t k = size_t(g.approach_milestones); k < g.milestones.size(); ++k)
     EXPECT_TRUE(g.milestones[k].roots[0].joints.has_value()) << "milestone " << k;
+  // Each stage states its whole posture, its heading too (the seated robot faces the desk), and
+  // so does the approach's last milestone, where the robot stands to sit down: a node
+  // turned from them does not reach them. The walk before states positions only.
+  const System& system = s.scene.system;
+  const int w = system.offset(g.milestones[0].roots[0].entity) + Entity::kBaseQuaternion;
+  for (int k = g.approach_milestones - 1; k < int(g.milestones.size()); ++k) {
+    const GuideMilestone::Root& root = g.milestones[size_t(k)].roots[0];
+    ASSERT_TRUE(root.rpy.has_value()) << "milestone " << k;
+    const Eigen::Vector3d rpy = base_rpy(g.milestone_configurations[size_t(k)].segment<4>(w));
+    EXPECT_LT((*root.rpy - rpy).norm(), 1e-9) << "milestone " << k;
+  }
+  EXPECT_LT(std::abs((*g.milestones.back().roots[0].rpy)[2]), 0.05);  // seated facing the desk (+x)
+  for (int k = 0; k + 1 < g.approach_milestones; ++k)
+    EXPECT_FALSE(g.milestones[size_t(k)].roots[0].rpy.has_value()) << "milestone " << k;
 }
 
 }  // namespace
