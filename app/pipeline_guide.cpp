@@ -34,18 +34,10 @@ std::string computed_guide_text(const Scenario& scenario, const ComputedGuide& g
 
 std::optional<ComputedGuide> complete_guide(Scenario& scenario) {
   // A written guide is used as it is, unless it is partial (partial_guide.h): then the roots it
-  // leaves out are given the computed path's poses.
-  std::vector<int> unstated;
-  if (scenario.has_guide) {
-    unstated = unstated_moving_roots(scenario);
-    if (unstated.empty()) return std::nullopt;
-  }
+  // leaves out are given the computed path's poses, and a posture change it leaves out (no joints
+  // stated) the computed stages.
+  if (scenario.has_guide) return complete_written_guide(scenario, scenario.guide);
   ComputedGuide guide = compute_guide(scenario, scenario.guide);
-  if (scenario.has_guide) {
-    if (guide.status == GuideStatus::Computed) complete_milestones(scenario, guide, unstated);
-    guide.completed = unstated;
-    return guide;
-  }
   if (guide.status == GuideStatus::Computed) {
     read_guide_section(scenario, computed_guide_text(scenario, guide),
                        scenario.file + " (computed guide)");
@@ -80,6 +72,11 @@ void print_guide_stats(const ComputedGuide& guide, std::ostream& out) {
   if (guide.stages > 0)
     out << "stats: guide: the last " << guide.stages << " milestones change the posture in stages ("
         << guide.stage_solves << " posture solves)\n";
+  if (guide.completed_posture_change)
+    out << "stats: guide: the written guide states no joints: its posture change completed, the "
+           "approach's last milestone and "
+        << guide.stages - 1 << " stages inserted before its last milestone, which gets the last "
+        << "stage's heading and joints\n";
   if (guide.hand_over_milestone > 0)
     out << "stats: guide: milestone " << guide.hand_over_milestone
         << " hands the object over (both carriers hold it; " << guide.hand_over_solves

@@ -40,9 +40,8 @@ void plan_perturbed(benchmark::State& state, const std::string& name) {
         scenario.initial_configuration[system.offset(e) + 0] += offset[0];
         scenario.initial_configuration[system.offset(e) + 1] += offset[1];
       }
-      // A guide-free scenario plans with the guide computed from its shifted start.
-      if (!scenario.has_guide &&
-          bench::use_computed_guide(scenario).status != GuideStatus::Computed) {
+      // The guide `plan` gives it, computed (or completed) from the shifted start.
+      if (!bench::guide_as_plan_gives(scenario)) {
         ++tried;
         continue;
       }

@@ -45,8 +45,10 @@ struct ComputedGuide {
   int hand_over_milestone = 0;
   int hand_over_solves = 0;
   std::string hand_over_note;
-  // When it completes a partial guide (partial_guide.h): the roots it gave poses to.
+  // When it completes a partial guide (partial_guide.h): the roots it gave poses to, and whether
+  // it gave the guide its posture change (complete_posture_change).
   std::vector<int> completed;
+  bool completed_posture_change = false;
   int raw_waypoints = 0;  // the planner's path before the shortcuts
   int checked_pairs = 0;  // collision pairs the validity rule checks
   // Each leg's state-validity checks in the path planner (GuideOptions::max_checks each), in the

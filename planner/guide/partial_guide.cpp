@@ -77,4 +77,74 @@ void complete_milestones(Problem& problem, const ComputedGuide& guide,
   }
 }
 
+bool states_no_joints(const Problem& problem) {
+  const System& system = problem.scene.system;
+  if (problem.milestones.empty()) return false;
+  for (int e = 0; e < system.num_entities(); ++e) {
+    const Entity& entity = system.entity(e);
+    if (entity.kind != EntityKind::FloatingRobot || entity.model->num_dofs() == 0) continue;
+    const int o = system.offset(e) + entity.first_dof();
+    for (const Eigen::VectorXd& mask : problem.milestone_masks)
+      if (mask.segment(o, entity.model->num_dofs()).any()) return false;
+  }
+  return true;
+}
+
+namespace {
+
+// The entries of q that computed milestone k states: its roots' positions, headings and joints.
+Eigen::VectorXd stated_entries(const System& system, const GuideMilestone& m) {
+  Eigen::VectorXd mask = Eigen::VectorXd::Zero(system.nq());
+  for (const GuideMilestone::Root& root : m.roots) {
+    const int o = system.offset(root.entity);
+    const Entity& entity = system.entity(root.entity);
+    mask.segment<3>(o + Entity::kBasePosition).setOnes();
+    if (root.rpy) mask.segment<4>(o + Entity::kBaseQuaternion).setOnes();
+    if (root.joints) mask.segment(o + entity.first_dof(), entity.model->num_dofs()).setOnes();
+  }
+  return mask;
+}
+
+}  // namespace
+
+void complete_posture_change(Problem& problem, const ComputedGuide& guide) {
+  const System& system = problem.scene.system;
+  const int first = guide.approach_milestones - 1;    // the approach's last milestone
+  const int last = int(guide.milestones.size()) - 1;  // the last stage
+  if (guide.stages <= 0 || first < 0 || problem.milestones.empty()) return;
+  // The last written milestone: what it leaves out, from the last stage.
+  const Eigen::VectorXd stage_mask = stated_entries(system, guide.milestones[size_t(last)]);
+  Eigen::VectorXd& q_last = problem.milestones.back();
+  Eigen::VectorXd& mask_last = problem.milestone_masks.back();
+  for (Eigen::Index i = 0; i < q_last.size(); ++i)
+    if (stage_mask[i] > 0.0 && !(mask_last[i] > 0.0)) {
+      q_last[i] = guide.milestone_configurations[size_t(last)][i];
+      mask_last[i] = 1.0;
+    }
+  // Before it: the approach's last milestone and the stages but the last.
+  const auto at = [&](auto& list) { return list.end() - 1; };
+  for (int k = first; k < last; ++k) {
+    const GuideMilestone& m = guide.milestones[size_t(k)];
+    problem.milestones.insert(at(problem.milestones), guide.milestone_configurations[size_t(k)]);
+    problem.milestone_masks.insert(at(problem.milestone_masks), stated_entries(system, m));
+    problem.milestone_tolerances.insert(at(problem.milestone_tolerances), 0.0);
+    problem.milestone_contact_pairs.insert(at(problem.milestone_contact_pairs), m.contacts);
+  }
+}
+
+std::optional<ComputedGuide> complete_written_guide(Problem& problem, const GuideOptions& options) {
+  const std::vector<int> unstated = unstated_moving_roots(problem);
+  const bool no_joints = states_no_joints(problem);
+  if (unstated.empty() && !no_joints) return std::nullopt;
+  ComputedGuide guide = compute_guide(problem, options);
+  const bool posture_change =
+      no_joints && guide.status == GuideStatus::Computed && guide.stages > 0;
+  if (unstated.empty() && !posture_change) return std::nullopt;
+  if (guide.status == GuideStatus::Computed) complete_milestones(problem, guide, unstated);
+  if (posture_change) complete_posture_change(problem, guide);
+  guide.completed = unstated;
+  guide.completed_posture_change = posture_change;
+  return guide;
+}
+
 }  // namespace stanceplan

@@ -4,6 +4,7 @@
 // step) and check the plans certify.
 #include <gtest/gtest.h>
 
+#include "planner/guide/partial_guide.h"
 #include "planner/search/stance_search.h"
 #include "tests/support/paths.h"
 #include "tests/support/planned_scenario.h"
@@ -21,6 +22,20 @@ TEST(Untuned, TheWalkWithATurnPlansWithTwoSolverCallsPerStep) {
   test::expect_certified(scenario, result, "untuned_walk_turn");
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_LE(result.solver_calls, 2 * static_cast<int>(result.plan.steps.size()));
+}
+
+// The desk with its coarse guide (waist positions only): the posture change it leaves out is
+// completed with the computed guide's stages (partial_guide.h), as `stanceplan plan` completes it.
+// No plan in 120 s before (about 1000 calls); 979 calls for 63 steps with it (35 s).
+TEST(Untuned, TheDeskPlansOnceItsCoarseGuideGetsThePostureChange) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/untuned/desk.yaml"));
+  const std::optional<ComputedGuide> guide = complete_written_guide(scenario, scenario.guide);
+  ASSERT_TRUE(guide.has_value());
+  EXPECT_TRUE(guide->completed_posture_change);
+  const SearchResult result = plan_with_one_process(scenario);
+  test::expect_certified(scenario, result, "untuned_desk");
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  EXPECT_LE(result.solver_calls, 979);
 }
 
 // The dual-arm hand-over with pads on any facet: a side of the standing cylinder is never offered

@@ -131,6 +131,58 @@ TEST(GuidePartial, ARootNoMilestoneStatesIsCompletedAlongThePath) {
   EXPECT_NEAR(x, g.q_goal[o1], 1e-9);  // the last milestone at the goal posture
 }
 
+// scenarios/untuned/desk.yaml states four waist positions, the last the seated waist, and no
+// joints: the posture change is what it leaves out. It is completed with the computed guide's:
+// before its last milestone, the approach's last (standing at the crouch's footholds, heading
+// stated) and the crouch, one-limb-free and seated stages (whole postures, their contacts); the
+// last keeps its position and gets the last stage's heading and joints; the three before stay.
+TEST(GuidePartial, ACoarseGuideToAChairGetsThePostureChangeItLeavesOut) {
+  Scenario s = load_scenario(test::source_path("scenarios/untuned/desk.yaml"));
+  ASSERT_TRUE(s.has_guide);
+  ASSERT_EQ(s.milestones.size(), 4u);
+  EXPECT_TRUE(unstated_moving_roots(s).empty());
+  EXPECT_TRUE(states_no_joints(s));
+  const std::vector<Eigen::VectorXd> written = s.milestones;
+  const std::vector<Eigen::VectorXd> written_masks = s.milestone_masks;
+  const std::optional<ComputedGuide> g = complete_written_guide(s, s.guide);
+  ASSERT_TRUE(g.has_value());
+  ASSERT_EQ(g->status, GuideStatus::Computed) << g->message;
+  EXPECT_TRUE(g->completed_posture_change);
+  ASSERT_EQ(g->stages, 4);
+  ASSERT_EQ(s.milestones.size(), 8u);  // 3 written, approach, crouch, one limb free, seated, last
+  ASSERT_EQ(s.milestone_masks.size(), 8u);
+  ASSERT_EQ(s.milestone_tolerances.size(), 8u);
+  ASSERT_EQ(s.milestone_contact_pairs.size(), 8u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(s.milestones[i], written[i]) << "milestone " << i;
+    EXPECT_EQ(s.milestone_masks[i], written_masks[i]) << "milestone " << i;
+  }
+  const int joints = 7, n = int(s.milestones[0].size());
+  EXPECT_TRUE(s.milestone_masks[3].segment<7>(0).isOnes());  // the approach: position, heading
+  EXPECT_FALSE(s.milestone_masks[3].tail(n - joints).any());
+  EXPECT_EQ(s.milestone_contact_pairs[3].size(), 2u);  // the soles
+  for (size_t i = 4; i < 8; ++i)
+    EXPECT_TRUE(s.milestone_masks[i].isOnes()) << "milestone " << i;  // whole postures
+  EXPECT_EQ(s.milestone_contact_pairs[4].size(), 2u);                 // the crouch: the soles
+  EXPECT_EQ(s.milestone_contact_pairs[6].size(), 4u);                 // seated: soles and thighs
+  EXPECT_EQ(s.milestones[7].head<3>(), written[3].head<3>());         // the seated waist as written
+  EXPECT_EQ(s.milestones[7].tail(n - joints), g->milestone_configurations.back().tail(n - joints));
+  EXPECT_FALSE(states_no_joints(s));
+}
+
+// A guide that states joints (the hand-guided desk), or whose goal is no posture change (the
+// untuned stairs: no joints, but the goal keeps none of the initial contacts), stays as written.
+TEST(GuidePartial, AGuideWithJointsOrWithoutPostureChangeStaysAsWritten) {
+  Scenario desk = load_scenario(test::source_path("scenarios/humanoid_sit_desk.yaml"));
+  EXPECT_FALSE(states_no_joints(desk));
+  EXPECT_FALSE(complete_written_guide(desk, desk.guide).has_value());
+  Scenario stairs = load_scenario(test::source_path("scenarios/untuned/stairs.yaml"));
+  EXPECT_TRUE(states_no_joints(stairs));
+  const std::vector<Eigen::VectorXd> written = stairs.milestones;
+  EXPECT_FALSE(complete_written_guide(stairs, stairs.guide).has_value());
+  EXPECT_EQ(stairs.milestones, written);
+}
+
 // A whole guide (every moving root stated) is not partial.
 TEST(GuidePartial, AWholeGuideIsNotPartial) {
   const Scenario s = load_scenario(test::source_path("scenarios/two_humanoids_table.yaml"));
