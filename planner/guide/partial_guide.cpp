@@ -132,9 +132,27 @@ void complete_posture_change(Problem& problem, const ComputedGuide& guide) {
   }
 }
 
+namespace {
+
+// Whether the goal stance keeps a contact of the initial one and adds one: what a posture change
+// needs (posture_stages.h); otherwise no guide is computed only to find none (a goal 3 m up took
+// 2 s of path planning).
+bool keeps_and_adds(const Problem& problem) {
+  bool keeps = false, adds = false;
+  for (const StanceContact& g : problem.goal_stance) {
+    const bool initial =
+        std::any_of(problem.initial_stance.begin(), problem.initial_stance.end(),
+                    [&](const StanceContact& c) { return c.contact.same_surfaces(g.contact); });
+    (initial ? keeps : adds) = true;
+  }
+  return keeps && adds;
+}
+
+}  // namespace
+
 std::optional<ComputedGuide> complete_written_guide(Problem& problem, const GuideOptions& options) {
   const std::vector<int> unstated = unstated_moving_roots(problem);
-  const bool no_joints = states_no_joints(problem);
+  const bool no_joints = states_no_joints(problem) && keeps_and_adds(problem);
   if (unstated.empty() && !no_joints) return std::nullopt;
   ComputedGuide guide = compute_guide(problem, options);
   const bool posture_change =
