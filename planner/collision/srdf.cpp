@@ -8,6 +8,7 @@
 
 #include "planner/util/input_error.h"
 #include "planner/util/text_file.h"
+#include "planner/util/xml_buffer.h"
 
 namespace stanceplan {
 namespace {
@@ -19,7 +20,8 @@ std::string where(const std::string& name, const TiXmlNode& node) {
 // Parses xml into *document and returns its <robot> root element.
 const TiXmlElement& robot_element(const std::string& xml, const std::string& name,
                                   TiXmlDocument* document) {
-  document->Parse(xml.c_str());
+  const std::string buffer = xml_parse_buffer(xml);  // NUL-padded: TinyXML reads past the end
+  document->Parse(buffer.c_str());
   if (document->Error()) {
     throw InputError(name + ":" + std::to_string(document->ErrorRow()) +
                      ": malformed XML: " + document->ErrorDesc());

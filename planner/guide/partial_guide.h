@@ -43,9 +43,10 @@ bool states_no_joints(const Problem& problem);
 void complete_posture_change(Problem& problem, const ComputedGuide& guide);
 
 // A written guide completed as `stanceplan plan` completes it: the roots it leaves out
-// (complete_milestones) and the posture change it leaves out (complete_posture_change), from the
-// guide computed for the whole problem. nullopt when there is nothing to complete: the written
-// guide is used as it is (also when only a posture change was left out and the computed guide
+// (complete_milestones) and the posture change it leaves out (complete_posture_change: no joints
+// stated, and the goal keeps a contact of the initial stance and adds one), from the guide
+// computed for the whole problem. nullopt when there is nothing to complete: the written guide
+// is used as it is (also when only a posture change was left out and the computed guide
 // has none). A guide that fails while roots are left out is returned as it failed.
 std::optional<ComputedGuide> complete_written_guide(Problem& problem, const GuideOptions& options);
 

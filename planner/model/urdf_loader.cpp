@@ -13,6 +13,7 @@
 
 #include "planner/util/input_error.h"
 #include "planner/util/text_file.h"
+#include "planner/util/xml_buffer.h"
 
 namespace stanceplan {
 namespace fs = std::filesystem;
@@ -43,7 +44,7 @@ urdf::ModelInterfaceSharedPtr parse_collecting(const std::string& xml,
   console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_WARN);
   urdf::ModelInterfaceSharedPtr model;
   try {
-    model = urdf::parseURDF(xml);
+    model = urdf::parseURDF(xml_parse_buffer(xml));  // NUL-padded: TinyXML reads past the end
   } catch (const std::exception& e) {
     handler.messages.push_back(e.what());
   }
