@@ -1,9 +1,10 @@
 #pragma once
 // `stanceplan replay SCENARIO.yaml REQUEST.bin [--print-level N] [--max-iterations N]
-// [--progress-budget N]`: solves one
-// candidate's request again, alone, as the search solved it (planner/io/request_file.h; the files
-// come from `stanceplan plan --requests DIR`): with Ipopt's own iteration log at --print-level 5,
-// or another iteration limit, to see why a candidate was rejected without the search around it.
+// [--progress-budget N] [--show-request]`: solves one candidate's request again, alone, as the
+// search solved it (planner/io/request_file.h; the files come from `stanceplan plan --requests
+// DIR`): with Ipopt's own iteration log at --print-level 5, another iteration limit or progress
+// budget, or what the solver was asked printed first, to see why a candidate was rejected without
+// the search around it.
 #include <iosfwd>
 #include <optional>
 #include <string>

@@ -186,7 +186,10 @@ Run plan_isolated(const Scenario& scenario, const SearchOptions& options) {
 void plan_untuned(benchmark::State& state, const std::string& name) {
   Scenario scenario = load_scenario(scenario_file(name));
   // The guide `plan` plans with: a coarse one completed where it leaves out the posture change.
-  if (!bench::guide_as_plan_gives(scenario)) state.SkipWithError("the guide failed");
+  if (!bench::guide_as_plan_gives(scenario)) {
+    state.SkipWithError("the guide failed");
+    return;
+  }
   bench::apply_solver_switches(scenario.solver);
   bench::apply_search_switches(scenario.search);
   SearchOptions options = scenario.search;

@@ -8,12 +8,6 @@
 namespace stanceplan {
 namespace {
 
-bool in_initial(const Problem& problem, const Contact& g) {
-  for (const StanceContact& c : problem.initial_stance)
-    if (c.contact.same_surfaces(g)) return true;
-  return false;
-}
-
 // Entity e's own surface in contact c, when c is between e and another entity.
 std::optional<SurfaceRef> own_surface(const Contact& c, int e) {
   if ((c.s1.entity == e) == (c.s2.entity == e)) return std::nullopt;
@@ -93,7 +87,7 @@ std::optional<Approach> approach_configuration(const Problem& problem,
     std::vector<SurfaceRef> kept;
     for (const StanceContact& g : problem.goal_stance) {
       const std::optional<SurfaceRef> own = own_surface(g.contact, e);
-      if (!own || !in_initial(problem, g.contact)) continue;
+      if (!own || !problem.in_initial_stance(g.contact)) continue;
       kept.push_back(*own);
       approach.kept.emplace_back(scene.surfaces.id(system, g.contact.s1),
                                  scene.surfaces.id(system, g.contact.s2));

@@ -24,8 +24,7 @@ ContactPhases order_goal_contacts(const Problem& problem, const PostureResult& g
   double largest_new = 0.0;
   for (size_t c = 0; c < n; ++c) {
     phases.shares[c] = lift[c] / total;
-    for (const StanceContact& i : problem.initial_stance)
-      if (i.contact.same_surfaces(problem.goal_stance[c].contact)) phases.initial[c] = true;
+    phases.initial[c] = problem.in_initial_stance(problem.goal_stance[c].contact);
     if (!phases.initial[c]) largest_new = std::max(largest_new, phases.shares[c]);
   }
   for (size_t c = 0; c < n; ++c) {

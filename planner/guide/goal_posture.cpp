@@ -31,19 +31,13 @@ struct Pull {
   double turn = 0.0;
 };
 
-bool already_initial(const Problem& problem, const StanceContact& g) {
-  for (const StanceContact& c : problem.initial_stance)
-    if (c.contact.same_surfaces(g.contact)) return true;
-  return false;
-}
-
 std::vector<Pull> pulls_on(const Problem& problem, const std::vector<ModelData>& data, int e) {
   const Scene& scene = problem.scene;
   std::vector<Pull> pulls;
   for (const StanceContact& g : problem.goal_stance) {
     const bool own1 = g.contact.s1.entity == e, own2 = g.contact.s2.entity == e;
     if (own1 == own2) continue;  // not on e, or a contact within e
-    if (!g.placement && already_initial(problem, g)) continue;
+    if (!g.placement && problem.in_initial_stance(g.contact)) continue;
     const SurfaceRef own = own1 ? g.contact.s1 : g.contact.s2;
     const SurfaceRef other = own1 ? g.contact.s2 : g.contact.s1;
     const Eigen::Isometry3d T_WO = surface_pose(scene, data, own);

@@ -208,7 +208,7 @@ void offer_grasps(const Problem& problem, const GuideOptions& options, const Han
 // whole posture, position, heading and a robot's joints (the solver's reference there is the
 // stage's posture: a robot that crouches is not pulled towards its standing legs; and a node
 // turned from it is not the stage: without the heading, the guide-free desk's crouch counted as
-// reached with the feet turned by 0.1-0.4 rad, and the first thigh landed askew in the middle of
+// reached with the feet turned by 0.04-0.42 rad, and the first thigh landed askew in the middle of
 // the seat, leaving no room for the second), and the stage's contacts offered.
 void append_stage(const System& system, const PostureStage& stage, ComputedGuide& guide) {
   GuideMilestone m;

@@ -105,6 +105,16 @@ Eigen::VectorXd stated_entries(const System& system, const GuideMilestone& m) {
   return mask;
 }
 
+// Whether the goal stance keeps a contact of the initial one and adds one: what a posture change
+// needs (posture_stages.h); otherwise no guide is computed only to find none (a goal 3 m up took
+// 2 s of path planning).
+bool keeps_and_adds(const Problem& problem) {
+  bool keeps = false, adds = false;
+  for (const StanceContact& g : problem.goal_stance)
+    (problem.in_initial_stance(g.contact) ? keeps : adds) = true;
+  return keeps && adds;
+}
+
 }  // namespace
 
 void complete_posture_change(Problem& problem, const ComputedGuide& guide) {
@@ -131,24 +141,6 @@ void complete_posture_change(Problem& problem, const ComputedGuide& guide) {
     problem.milestone_contact_pairs.insert(at(problem.milestone_contact_pairs), m.contacts);
   }
 }
-
-namespace {
-
-// Whether the goal stance keeps a contact of the initial one and adds one: what a posture change
-// needs (posture_stages.h); otherwise no guide is computed only to find none (a goal 3 m up took
-// 2 s of path planning).
-bool keeps_and_adds(const Problem& problem) {
-  bool keeps = false, adds = false;
-  for (const StanceContact& g : problem.goal_stance) {
-    const bool initial =
-        std::any_of(problem.initial_stance.begin(), problem.initial_stance.end(),
-                    [&](const StanceContact& c) { return c.contact.same_surfaces(g.contact); });
-    (initial ? keeps : adds) = true;
-  }
-  return keeps && adds;
-}
-
-}  // namespace
 
 std::optional<ComputedGuide> complete_written_guide(Problem& problem, const GuideOptions& options) {
   const std::vector<int> unstated = unstated_moving_roots(problem);

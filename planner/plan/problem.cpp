@@ -8,6 +8,12 @@ Stance Problem::stance(const std::vector<StanceContact>& contacts) const {
   return Stance(std::move(list));
 }
 
+bool Problem::in_initial_stance(const Contact& c) const {
+  for (const StanceContact& i : initial_stance)
+    if (i.contact.same_surfaces(c)) return true;
+  return false;
+}
+
 PostureRequest Problem::loaded_request(const std::vector<StanceContact>& contacts,
                                        const Eigen::VectorXd& q) const {
   PostureRequest request;

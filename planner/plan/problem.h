@@ -39,6 +39,8 @@ struct Problem {
   SolverOptions solver;
 
   Stance stance(const std::vector<StanceContact>& contacts) const;
+  // Whether the initial stance has a contact of the same two surfaces as c (the search's class).
+  bool in_initial_stance(const Contact& c) const;
   // A solver request realising `contacts` with every one loaded at its stated placement (free
   // when none is stated), starting from and pulled towards q.
   PostureRequest loaded_request(const std::vector<StanceContact>& contacts,
