@@ -18,7 +18,7 @@ int run_guide(const GuideCommandOptions& options, std::ostream& out, std::ostrea
     err << "stanceplan: " << options.scenario
         << " has a guide: section of its own (plan uses it); computing one all the same\n";
   scenario.has_guide = false;
-  const std::optional<ComputedGuide> guide = complete_guide(scenario);
+  const std::optional<ComputedGuide> guide = complete_scenario_guide(scenario);
   if (options.stats) print_guide_stats(*guide, out);
   if (guide->status != GuideStatus::Computed) {
     err << "stanceplan: " << guide->message << "\n";

@@ -14,6 +14,7 @@
 #include "planner/guide/guide_planner.h"
 #include "planner/io/plan_reader.h"
 #include "planner/io/scenario.h"
+#include "planner/io/scenario_guide.h"
 #include "planner/motion/motion_options.h"
 #include "planner/motion/step_motion.h"
 #include "planner/search/stance_search.h"
@@ -77,13 +78,6 @@ bool write_partial_plan(const SearchResult& result, const Scenario& scenario,
                         const std::string& path, std::ostream& err);
 
 // --- the computed guide (pipeline_guide.cpp)
-// When the scenario has no `guide:` section: computes one (planner/guide/guide_planner.h) with the
-// scenario's guide settings and, when computed, reads it into the scenario exactly as the section
-// written by computed_guide_text would be read. A scenario with a partial guide (one that states
-// no pose for a root that must move, planner/guide/partial_guide.h) gets those roots' poses from
-// the computed path (ComputedGuide::completed names them). nullopt when the scenario's own guide
-// is whole.
-std::optional<ComputedGuide> complete_guide(Scenario& scenario);
 // The guide in the scenario's `guide:` syntax, with a comment line saying how it was computed.
 std::string computed_guide_text(const Scenario& scenario, const ComputedGuide& guide);
 // What milestone k of a computed guide offers, for its figure: "walks on robot/l_sole on env/floor,

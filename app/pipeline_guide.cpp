@@ -7,7 +7,6 @@
 #include <string>
 
 #include "app/pipeline.h"
-#include "planner/guide/partial_guide.h"
 #include "planner/io/guide_writer.h"
 #include "render/image/png_io.h"
 
@@ -30,21 +29,6 @@ std::string computed_guide_text(const Scenario& scenario, const ComputedGuide& g
                       "new contact");
   }
   return guide_section(scenario.scene.system, guide.milestones, comment);
-}
-
-std::optional<ComputedGuide> complete_guide(Scenario& scenario) {
-  // A written guide is used as it is, unless it is partial (partial_guide.h): then the roots it
-  // leaves out are given the computed path's poses, and a posture change it leaves out (no joints
-  // stated) the computed stages.
-  if (scenario.has_guide) return complete_written_guide(scenario, scenario.guide);
-  ComputedGuide guide = compute_guide(scenario, scenario.guide);
-  if (guide.status == GuideStatus::Computed) {
-    read_guide_section(scenario, computed_guide_text(scenario, guide),
-                       scenario.file + " (computed guide)");
-    // The goal contacts that only steady the body come last (contact_phases.h).
-    if (scenario.search.last_contacts.empty()) scenario.search.last_contacts = guide.phases.last;
-  }
-  return guide;
 }
 
 void print_guide_stats(const ComputedGuide& guide, std::ostream& out) {

@@ -213,7 +213,7 @@ Planned plan_scenario(const PlanOptions& options, std::ostream& out, std::ostrea
   Scenario loaded = load_scenario(options.scenario);
   if (options.seed) loaded.guide.seed = *options.seed;
   // No guide: computed before the session forks its solver processes (docs/ARCHITECTURE.md).
-  const std::optional<ComputedGuide> guide = complete_guide(loaded);
+  const std::optional<ComputedGuide> guide = complete_scenario_guide(loaded);
   planned.scenario = std::make_shared<const Scenario>(std::move(loaded));
   const Scenario& scenario = *planned.scenario;
   print_computed_collision_matrices(scenario.scene, err);

@@ -10,13 +10,14 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "bench/computed_guide.h"
 #include "planner/guide/guide_planner.h"
 #include "planner/io/scenario.h"
+#include "planner/io/scenario_guide.h"
 #include "planner/search/stance_search.h"
 
 namespace stanceplan {
@@ -56,19 +57,17 @@ void guide_time(benchmark::State& state, const std::string& name) {
   state.counters["stages"] = guide.stages;
 }
 
-// The whole plan: the guide (when computed) and the search, one solver process.
-void plan_time(benchmark::State& state, const std::string& file, bool computed) {
+// The whole plan: the guide as `plan` gives it (computed for a guide-free file, a written one
+// completed where partial) and the search, one solver process.
+void plan_time(benchmark::State& state, const std::string& file) {
   for (auto _ : state) {
     Scenario s = load_scenario(scenario_path(file));
-    double guide_s = 0.0;
-    if (computed) {
-      const ComputedGuide guide = bench::use_computed_guide(s);
-      guide_s = guide.time_s;
-      state.counters["guide_s"] = guide_s;
-      if (guide.status != GuideStatus::Computed) {
-        state.SkipWithError(guide.message.c_str());
-        return;
-      }
+    const std::optional<ComputedGuide> guide = complete_scenario_guide(s);
+    const double guide_s = guide ? guide->time_s : 0.0;
+    state.counters["guide_s"] = guide_s;
+    if (guide && guide->status != GuideStatus::Computed) {
+      state.SkipWithError(guide->message.c_str());
+      return;
     }
     SearchOptions options = s.search;
     options.threads = 1;
@@ -85,10 +84,10 @@ void plan_time(benchmark::State& state, const std::string& file, bool computed) 
     benchmark::RegisterBenchmark(("guide/" + name).c_str(), guide_time, name)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("plan/" + name + "/computed").c_str(), plan_time,
-                                 "guide_free/" + name + ".yaml", true)
+                                 "guide_free/" + name + ".yaml")
         ->Unit(benchmark::kSecond)
         ->Iterations(1);
-    benchmark::RegisterBenchmark(("plan/" + name + "/written").c_str(), plan_time, written, false)
+    benchmark::RegisterBenchmark(("plan/" + name + "/written").c_str(), plan_time, written)
         ->Unit(benchmark::kSecond)
         ->Iterations(1);
   }

@@ -449,7 +449,7 @@ int run_panel(const PanelOptions& options, std::ostream& out, std::ostream& err)
   print_computed_collision_matrices(scenario.scene, err);
   print_model_warnings(scenario.scene, err);
   // No guide: computed before the session forks its solver processes (app/pipeline.h).
-  if (const std::optional<ComputedGuide> guide = complete_guide(scenario);
+  if (const std::optional<ComputedGuide> guide = complete_scenario_guide(scenario);
       guide && guide->status != GuideStatus::Computed) {
     err << "stanceplan: no plan: " << guide->message << "\n";
     return kExitFailed;

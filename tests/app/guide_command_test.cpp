@@ -31,7 +31,7 @@ TEST(GuideCommand, WritesAGuideThatPastedIntoTheScenarioGivesTheSameMilestones) 
   EXPECT_NE(text.find("\nguide:\n  - robot: {base_position: ["), std::string::npos) << text;
 
   Scenario computed = load_scenario(file);
-  ASSERT_TRUE(app::complete_guide(computed).has_value());
+  ASSERT_TRUE(complete_scenario_guide(computed).has_value());
   const std::string pasted = (test::temp_dir("guide") / "side_step_pasted.yaml").string();
   std::ofstream(pasted) << replace_all(read_text_file(file), "../../assets/",
                                        test::source_path("assets") + "/")

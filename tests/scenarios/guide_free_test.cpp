@@ -13,7 +13,7 @@ namespace {
 SearchResult plan_guide_free(const std::string& name, Scenario* scenario) {
   *scenario = load_scenario(test::source_path("scenarios/guide_free/" + name + ".yaml"));
   EXPECT_FALSE(scenario->has_guide);
-  const std::optional<ComputedGuide> guide = app::complete_guide(*scenario);
+  const std::optional<ComputedGuide> guide = complete_scenario_guide(*scenario);
   EXPECT_TRUE(guide.has_value());
   EXPECT_EQ(guide->status, GuideStatus::Computed) << guide->message;
   EXPECT_EQ(scenario->milestones.size(), guide->milestones.size());
