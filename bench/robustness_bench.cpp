@@ -4,7 +4,8 @@
 // that is found only from the exact guess of the scenario file depends on solver round-off, not on
 // the task. Counter `success` is the fraction of the eight that found a plan (1 = robust);
 // STANCEPLAN_VERBOSE=1 prints each run's nodes and solver calls. The guide-free copies
-// (guide_free/NAME) plan with the guide computed from the shifted start. Run:
+// (guide_free/NAME) plan with the guide computed from the shifted start, the untuned files
+// (untuned/NAME) with their coarse guides completed from it where `plan` completes them. Run:
 //   build/bench/robustness_bench --benchmark_filter=sit_desk
 //   build/bench/robustness_bench --benchmark_filter=guide_free/desk
 #include <benchmark/benchmark.h>
@@ -12,6 +13,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -66,17 +68,24 @@ void plan_perturbed(benchmark::State& state, const std::string& name) {
 
 const auto registered = bench::register_scenarios(plan_perturbed);
 
-// The guide-free copies of the paper's scenarios (scenarios/guide_free/), each with the guide
-// computed from its shifted start, as `stanceplan plan` computes it.
-[[maybe_unused]] const bool kGuideFree = [] {
-  for (const char* name : {"walk", "desk", "ball", "pen", "dual_arm", "table", "climb", "stairs"})
-    benchmark::RegisterBenchmark((std::string("guide_free/") + name).c_str(), plan_perturbed,
-                                 std::string("guide_free/") + name)
+// Each file of scenarios/FOLDER/ in `names`, one iteration over the eight starts.
+bool register_folder(const std::string& folder, std::initializer_list<const char*> names) {
+  for (const char* name : names)
+    benchmark::RegisterBenchmark((folder + "/" + name).c_str(), plan_perturbed, folder + "/" + name)
         ->Iterations(1)
         ->Unit(benchmark::kSecond)
         ->UseRealTime();
   return true;
-}();
+}
+
+// The guide-free copies of the paper's scenarios (scenarios/guide_free/), each with the guide
+// computed from its shifted start, as `stanceplan plan` computes it; the untuned scenarios
+// (scenarios/untuned/), their coarse guides completed from the shifted start where `plan`
+// completes them (the desk's posture change).
+[[maybe_unused]] const bool kGuideFree = register_folder(
+    "guide_free", {"walk", "desk", "ball", "pen", "dual_arm", "table", "climb", "stairs"});
+[[maybe_unused]] const bool kUntuned =
+    register_folder("untuned", {"stairs", "walk_turn", "side_step", "dual_arm_handover", "desk"});
 
 }  // namespace
 }  // namespace stanceplan

@@ -35,7 +35,8 @@ struct SearchOptions {
   // Cost: distance to the targeted milestone, plus stance_weight x |stance xor goal stance| once
   // the last milestone is the target.
   double stance_weight = 0.1;
-  // Backtracking: further attempts from other initial guesses per failed (node, candidate).
+  // Backtracking: further attempts from other initial guesses per failed (node, candidate); none
+  // after a first solve that ended infeasible (StanceSearch::Run::worth_retrying).
   int max_retries = 2;
   // A candidate that failed its first attempt from the same stance, posture and relative placement
   // of its surfaces is deferred to backtracking instead of being solved at once (failure_memo.h; a

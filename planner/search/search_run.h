@@ -99,6 +99,8 @@ class StanceSearch::Run {
   std::vector<Attempt> take_pending(int n);
   bool solves_alone(const std::deque<Attempt>& pending) const;
   PostureRequest request_for(const Attempt& attempt, size_t index) const;
+  bool worth_retrying(const Attempt& a, const PostureResult& r) const;
+  bool urgent(const Attempt& a) const;
 
   StanceSearch& search_;
   const Problem& problem_;
@@ -116,8 +118,9 @@ class StanceSearch::Run {
   std::vector<SearchNode>& tree_;
   int t_ = 0;              // the targeted milestone
   std::vector<int> open_;  // nodes not yet expanded
-  // Backtracking queues: failed candidates that would add a goal contact are retried at once from
-  // other initial guesses; the others when the open queue is empty.
+  // Backtracking queues: failed candidates that would add a goal contact the guide's posture
+  // realises are retried at once from other initial guesses (urgent()); the others when the open
+  // queue is empty.
   std::deque<Attempt> urgent_, retries_;
   FailureMemo failures_;  // candidates that failed every attempt (defer_repeated_failures)
   NormalAngleTable angles_{problem_.scene};  // the normal-angle rule's bounds (candidates.h)

@@ -29,7 +29,8 @@ TEST(Untuned, TheWalkWithATurnPlansWithTwoSolverCallsPerStep) {
 // the seated body, are offered last (planner/io/scenario_guide.h), as `stanceplan plan` does. No
 // plan in 120 s before the stages (about 1000 calls); 979 calls for 63 steps with them; 155 for 43
 // steps with the forearms last (before, they went on the desk before the second thigh was on the
-// seat, and 777 calls tried to put it there).
+// seat, and 777 calls tried to put it there); 134 once a thigh 0.4 m above the seat is no longer
+// retried at once and no candidate after an infeasible solve (search_run.cpp).
 TEST(Untuned, TheDeskPlansOnceItsCoarseGuideGetsThePostureChange) {
   Scenario scenario = load_scenario(test::source_path("scenarios/untuned/desk.yaml"));
   const std::optional<ComputedGuide> guide = complete_scenario_guide(scenario);
@@ -41,7 +42,7 @@ TEST(Untuned, TheDeskPlansOnceItsCoarseGuideGetsThePostureChange) {
   const SearchResult result = plan_with_one_process(scenario);
   test::expect_certified(scenario, result, "untuned_desk");
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
-  EXPECT_LE(result.solver_calls, 155);
+  EXPECT_LE(result.solver_calls, 134);
 }
 
 // The dual-arm hand-over with pads on any facet: a side of the standing cylinder is never offered
