@@ -179,9 +179,9 @@ void StanceSearch::Run::take_retries(std::vector<Attempt>& batch) {
 // first solve found the candidate infeasible (Ipopt's local infeasibility, a failed restoration,
 // an active set that keeps growing: PostureStatus::Infeasible). A heuristic, measured on the 23
 // untuned, paper and guide-free runs at 1e723bf (`plan --verbose`): no candidate retried after an
-// infeasible attempt was ever solved (7 of 7 failed every retry; 1 of 47 was solved in the
-// untuned desk started 1 cm off, a run that found no plan), while half of those retried after
-// an iteration limit were (17 of 34).
+// infeasible attempt was ever solved (7 of 7 failed every retry; 3 of 47, one of them into a new
+// node, in the untuned desk started 1 cm off, a run that found no plan), while half of those
+// retried after an iteration limit were (17 of 34).
 bool StanceSearch::Run::worth_retrying(const Attempt& a, const PostureResult& r) const {
   return a.attempt < options_.max_retries && r.status != PostureStatus::Infeasible;
 }

@@ -12,6 +12,7 @@
 #include "planner/search/stance_search.h"
 #include "planner/solver/posture_solver.h"
 #include "tests/support/paths.h"
+#include "tests/support/planned_scenario.h"
 #include "tests/support/scenario_motion.h"
 
 namespace stanceplan {
@@ -28,7 +29,7 @@ struct Planned {
 Planned plan(const std::string& name) {
   Scenario scenario = load_scenario(test::source_path("scenarios/" + name + ".yaml"));
   SearchOptions options = scenario.search;
-  options.time_limit_s = 1800.0;
+  options.time_limit_s = test::kTestTimeLimit;
   SearchResult result = StanceSearch(scenario, options).run();
   return {std::move(scenario), std::move(result)};
 }
