@@ -612,6 +612,7 @@ class ScenarioReader {
                  "last_contacts",
                  "min_contacts",
                  "defer_repeated_failures",
+                 "defer_predicted_loops",
                  "expansion_batch",
                  "order_candidates",
                  "progress_budget",
@@ -644,6 +645,9 @@ class ScenarioReader {
     if (node["defer_repeated_failures"])
       s.search.defer_repeated_failures =
           boolean(node["defer_repeated_failures"], "search.defer_repeated_failures");
+    if (node["defer_predicted_loops"])
+      s.search.defer_predicted_loops =
+          boolean(node["defer_predicted_loops"], "search.defer_predicted_loops");
     if (node["skip_unreached_milestones"])
       s.search.skip_unreached_milestones =
           boolean(node["skip_unreached_milestones"], "search.skip_unreached_milestones");

@@ -7,6 +7,7 @@
 #include "planner/plan/plan_step.h"
 #include "planner/search/search_event_builders.h"
 #include "planner/search/search_run.h"
+#include "planner/search/step_target.h"
 
 namespace stanceplan {
 namespace {
@@ -92,6 +93,31 @@ bool StanceSearch::Run::removal_reaches_a_node(const SearchNode& node, const Can
   std::vector<Placement> placements;  // in the child's stance order, as make_node lists them
   for (const Contact& kept : next.contacts())
     placements.push_back(node.placements[size_t(from.find(kept))]);
+  return in_tree(next, placements, node.id);
+}
+
+// An addition whose first attempt aims s1 (obj4's target, where s1 fits on s2 along the way:
+// landing_estimate; or the goal's stated placement) within loop avoidance's tolerances of a node's
+// placement of it, every other contact at that node's
+// placements: the solve would most likely end "already in the tree" (the climb: putting back the
+// sole just unloaded, aimed where it still stands). A prediction, not a proof (the solver may land
+// elsewhere), so such a candidate waits for backtracking instead of being pruned.
+bool StanceSearch::Run::addition_aims_at_a_node(const SearchNode& node, const Candidate& c) const {
+  if (!c.add) return false;
+  const AdditionAim aim = addition_aim(node, c.contact, 0);
+  const Placement now = measure_placement(problem_.scene, c.contact, node.q());
+  Placement landing =
+      aim.placement ? *aim.placement : landing_estimate(problem_.scene, c.contact, now, aim.target);
+  // A point's angle is its link's turn about s2's normal, which nothing aims (a sphere turns
+  // freely): the solve keeps about the node's.
+  if (problem_.scene.surfaces.get(c.contact.s1).is_point()) landing.theta = now.theta;
+  const Stance& from = node.stance();
+  const Stance next = from.with(c.contact);
+  std::vector<Placement> placements;  // in the child's stance order, as make_node lists them
+  for (const Contact& k : next.contacts()) {
+    const int i = from.find(k);
+    placements.push_back(i >= 0 ? node.placements[size_t(i)] : landing);
+  }
   return in_tree(next, placements, node.id);
 }
 

@@ -46,6 +46,11 @@ struct SearchOptions {
   // takes one such addition at a time, the others waiting for its outcome (103 -> 61, the 22 other
   // untuned, paper and guide-free runs unchanged).
   bool defer_repeated_failures = true;
+  // An addition whose first attempt aims its surface at a node's placement of it, the other
+  // contacts at that node's placements (putting back the sole just unloaded, aimed where it still
+  // stands), is deferred to backtracking: its solve would most likely end "already in the tree"
+  // (StanceSearch::Run::addition_aims_at_a_node; a heuristic: it orders, never prunes).
+  bool defer_predicted_loops = true;
   // When every stance was tried and no node came within tolerance of the targeted milestone, the
   // search aims at the next one instead of giving up (every node is expanded again for it; a
   // Milestone event with a message says which was skipped). The guide is a heuristic: a milestone

@@ -69,10 +69,12 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   for (size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
     if (removal_reaches_a_node(node, c)) continue;
-    // Failed from the same situation before: solved only when backtracking (failure_memo.h).
-    const bool repeated = options_.defer_repeated_failures &&
-                          failures_.seen(problem_.scene, data, node.q(), node.stance(), c);
-    if (repeated)
+    // Aimed at a node's placement, or failed from the same situation before: solved only when
+    // backtracking (addition_aims_at_a_node, failure_memo.h).
+    const bool deferred = (options_.defer_predicted_loops && addition_aims_at_a_node(node, c)) ||
+                          (options_.defer_repeated_failures &&
+                           failures_.seen(problem_.scene, data, node.q(), node.stance(), c));
+    if (deferred)
       retries_.push_back({n, c, 0, shares[i]});
     else
       pending_[size_t(n)].push_back({n, c, 0, shares[i]});
@@ -137,6 +139,26 @@ bool StanceSearch::Run::solves_alone(const std::deque<Attempt>& pending) const {
   });
 }
 
+StanceSearch::Run::AdditionAim StanceSearch::Run::addition_aim(const SearchNode& node,
+                                                               const Contact& added,
+                                                               int attempt) const {
+  const Scene& scene = problem_.scene;
+  const Eigen::VectorXd& q_ref = guide_.size() > 0 ? guide_.milestone(t_) : node.q();
+  AdditionAim out;
+  // obj4 pulls the new contact towards its placement in the targeted milestone; a retry aims at a
+  // point nearer the current one (a shorter step); never across another contact.
+  const Placement now = measure_placement(scene, added, node.q());
+  const Placement aim = measure_placement(scene, added, q_ref);
+  out.target =
+      step_target(scene, node.stance(), node.placements, added, now, aim, std::pow(0.5, attempt));
+  // Heading for the goal (the last milestone), a goal contact with a stated placement is first
+  // tried exactly there; a retry lets the solver choose.
+  for (const StanceContact& g : problem_.goal_stance)
+    if (g.placement && g.contact.same_surfaces(added) && attempt == 0 && t_ + 1 >= guide_.size())
+      out.placement = g.placement;
+  return out;
+}
+
 PostureRequest StanceSearch::Run::request_for(const Attempt& a, size_t index) const {
   const Scene& scene = problem_.scene;
   const SearchNode& node = tree_[size_t(a.node)];
@@ -147,19 +169,9 @@ PostureRequest StanceSearch::Run::request_for(const Attempt& a, size_t index) co
   const Eigen::VectorXd& q_ref = guide_.size() > 0 ? guide_.milestone(t_) : node.q();
   if (a.candidate.add) {
     ContactTask added{a.candidate.contact, false, std::nullopt, std::nullopt, {}, {}};
-    // obj4 pulls the new contact towards its placement in the targeted milestone; a retry aims at
-    // a point nearer the current one (a shorter step); never across another contact.
-    const Placement now = measure_placement(scene, a.candidate.contact, node.q());
-    const Placement aim = measure_placement(scene, a.candidate.contact, q_ref);
-    const double share = std::pow(0.5, a.attempt);
-    added.placement_target =
-        step_target(scene, node.stance(), node.placements, a.candidate.contact, now, aim, share);
-    // Heading for the goal (the last milestone), a goal contact with a stated placement is first
-    // tried exactly there; a retry lets the solver choose.
-    for (const StanceContact& g : problem_.goal_stance)
-      if (g.placement && g.contact.same_surfaces(a.candidate.contact) && a.attempt == 0 &&
-          t_ + 1 >= guide_.size())
-        added.placement = g.placement;
+    const AdditionAim aim = addition_aim(node, a.candidate.contact, a.attempt);
+    added.placement_target = aim.target;
+    added.placement = aim.placement;
     r.contacts.push_back(added);
   } else {
     for (ContactTask& task : r.contacts)

@@ -80,6 +80,7 @@ class StanceSearch::Run {
   bool in_tree(const Stance& stance, const std::vector<Placement>& placements, int parent) const;
   bool already_in_tree(const SearchNode& node) const;
   bool removal_reaches_a_node(const SearchNode& node, const Candidate& c) const;
+  bool addition_aims_at_a_node(const SearchNode& node, const Candidate& c) const;
   int closest() const;
   void advance_milestones();
   bool skip_milestone();
@@ -98,6 +99,13 @@ class StanceSearch::Run {
   // open list while some are left. One alone when solves_alone (SearchOptions::batch_margin).
   std::vector<Attempt> take_pending(int n);
   bool solves_alone(const std::deque<Attempt>& pending) const;
+  // Where attempt `attempt` of adding `added` from `node` aims s1: obj4's step target, and the
+  // goal's stated placement when that attempt is made exactly there.
+  struct AdditionAim {
+    Placement target;
+    std::optional<Placement> placement;
+  };
+  AdditionAim addition_aim(const SearchNode& node, const Contact& added, int attempt) const;
   PostureRequest request_for(const Attempt& attempt, size_t index) const;
   bool worth_retrying(const Attempt& a, const PostureResult& r) const;
   bool urgent(const Attempt& a) const;

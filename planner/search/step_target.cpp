@@ -89,4 +89,23 @@ Placement step_target(const Scene& scene, const Stance& stance,
   return point(last);
 }
 
+Placement landing_estimate(const Scene& scene, const Contact& added, const Placement& now,
+                           const Placement& target) {
+  const Surface& s1 = scene.surfaces.get(added.s1);
+  const std::vector<Eigen::Vector2d>& polygon = scene.surfaces.get(added.s2).vertices_S;
+  auto fits = [&](double s) {
+    const auto mine = footprint_S2(s1, along(now, target, s));
+    return std::all_of(mine.begin(), mine.end(), [&](const Eigen::Vector2d& v) {
+      return distance_outside(polygon, v) <= 0.0;
+    });
+  };
+  if (fits(1.0) || !fits(0.0)) return target;
+  double in = 0.0, out = 1.0;
+  for (int k = 0; k < 20; ++k) {  // to a millionth of the step
+    const double mid = 0.5 * (in + out);
+    (fits(mid) ? in : out) = mid;
+  }
+  return along(now, target, in);
+}
+
 }  // namespace stanceplan

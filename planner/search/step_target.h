@@ -40,4 +40,13 @@ Placement step_target(const Scene& scene, const Stance& stance,
                       const std::vector<Placement>& placements, const Contact& added,
                       const Placement& now, const Placement& aim, double share);
 
+// Where a solve aimed at `target` can put s1 with its footprint inside s2's polygon (case 1's
+// relaxed E10-E11): `target` when the footprint fits there, else the last point of the way from
+// `now` where it fits (the sole aimed past a platform's edge stops at the edge), found by
+// bisection (along a line, the points where a convex footprint fits in a convex polygon form one
+// interval). `target` itself when the footprint does not fit at `now` either. An estimate for
+// ordering candidates: the solver's placement also depends on the rest of the body.
+Placement landing_estimate(const Scene& scene, const Contact& added, const Placement& now,
+                           const Placement& target);
+
 }  // namespace stanceplan

@@ -83,5 +83,24 @@ TEST_F(StepTarget, StepsThatCrossNothingAreUnchanged) {
   EXPECT_EQ(alone.y, 0.0);
 }
 
+// Where a solve aimed past the floor's edge can put the sole (landing_estimate, used to predict
+// loops): the last point of the way where the footprint is still inside the floor's polygon.
+TEST_F(StepTarget, ASoleAimedPastTheEdgeLandsAtTheEdge) {
+  const Surface& floor = scene.surfaces.get(right.s2);
+  double x_edge = -1e9;
+  for (const Eigen::Vector2d& v : floor.vertices_S) x_edge = std::max(x_edge, v.x());
+  // The sole (0.22 m long, its frame at the centre) from 0.5 m inside the edge to 0.3 m past it.
+  const Placement now{x_edge - 0.5, -0.1, 0.0}, aim{x_edge + 0.3, -0.1, 0.0};
+  const Placement landed = landing_estimate(scene, right, now, aim);
+  EXPECT_NEAR(landed.x, x_edge - 0.11, 1e-5);
+  EXPECT_NEAR(landed.y, -0.1, 1e-12);
+  EXPECT_EQ(landed.theta, 0.0);
+  // Inside, the aim itself; from outside (nothing fits on the way's start), the aim too.
+  const Placement inside{x_edge - 0.2, 0.0, 0.3};
+  EXPECT_EQ(landing_estimate(scene, right, now, inside).x, inside.x);
+  const Placement outside{x_edge + 0.2, 0.0, 0.0};
+  EXPECT_EQ(landing_estimate(scene, right, outside, aim).x, aim.x);
+}
+
 }  // namespace
 }  // namespace stanceplan
