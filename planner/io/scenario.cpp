@@ -613,6 +613,7 @@ class ScenarioReader {
                  "min_contacts",
                  "defer_repeated_failures",
                  "defer_predicted_loops",
+                 "defer_unbalanced_removals",
                  "expansion_batch",
                  "order_candidates",
                  "progress_budget",
@@ -648,6 +649,9 @@ class ScenarioReader {
     if (node["defer_predicted_loops"])
       s.search.defer_predicted_loops =
           boolean(node["defer_predicted_loops"], "search.defer_predicted_loops");
+    if (node["defer_unbalanced_removals"])
+      s.search.defer_unbalanced_removals =
+          boolean(node["defer_unbalanced_removals"], "search.defer_unbalanced_removals");
     if (node["skip_unreached_milestones"])
       s.search.skip_unreached_milestones =
           boolean(node["skip_unreached_milestones"], "search.skip_unreached_milestones");

@@ -31,6 +31,11 @@
 //  - pairs not matching SearchOptions::contact_pairs, when the scenario lists them (option);
 //  - pairs matching SearchOptions::last_contacts before every other goal contact is in the
 //    stance (option).
+// Besides these, the search (search_requests.cpp) defers to backtracking, never prunes: removals
+// whose child is a node already (exact, skipped), additions aimed at a node's placement
+// (defer_predicted_loops), removals that leave a held object unbalanced (object_balance.h,
+// defer_unbalanced_removals) and candidates that failed from the same situation
+// (failure_memo.h, defer_repeated_failures).
 #include <vector>
 
 #include "planner/contact/contact.h"

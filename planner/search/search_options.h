@@ -51,6 +51,12 @@ struct SearchOptions {
   // stands), is deferred to backtracking: its solve would most likely end "already in the tree"
   // (StanceSearch::Run::addition_aims_at_a_node; a heuristic: it orders, never prunes).
   bool defer_predicted_loops = true;
+  // A removal after which a held rigid object (an object entity without joints) cannot balance on
+  // its other contacts' friction cones at the node's configuration (object_balance.h: a pad left
+  // alone on a standing cylinder's side) is deferred to backtracking (a heuristic: the solve may
+  // turn the object; it orders, never prunes). Off: on eight shifted starts each, one scenario
+  // gained a plan and two lost one (README, Untuned scenarios, session 20).
+  bool defer_unbalanced_removals = false;
   // When every stance was tried and no node came within tolerance of the targeted milestone, the
   // search aims at the next one instead of giving up (every node is expanded again for it; a
   // Milestone event with a message says which was skipped). The guide is a heuristic: a milestone

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "planner/model/kinematics.h"
+#include "planner/search/object_balance.h"
 #include "planner/search/search_event_builders.h"
 #include "planner/search/search_run.h"
 #include "planner/search/step_target.h"
@@ -69,11 +70,16 @@ std::optional<std::vector<StanceSearch::Attempt>> StanceSearch::Run::expand(int 
   for (size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
     if (removal_reaches_a_node(node, c)) continue;
-    // Aimed at a node's placement, or failed from the same situation before: solved only when
-    // backtracking (addition_aims_at_a_node, failure_memo.h).
-    const bool deferred = (options_.defer_predicted_loops && addition_aims_at_a_node(node, c)) ||
-                          (options_.defer_repeated_failures &&
-                           failures_.seen(problem_.scene, data, node.q(), node.stance(), c));
+    // Aimed at a node's placement, leaving a held object unbalanced, or failed from the same
+    // situation before: solved only when backtracking (addition_aims_at_a_node, object_balance.h,
+    // failure_memo.h).
+    const bool deferred =
+        (options_.defer_predicted_loops && addition_aims_at_a_node(node, c)) ||
+        (options_.defer_unbalanced_removals && !c.add &&
+         !objects_balance_without(problem_.scene, data, node.stance(), c.contact,
+                                  solver_.options().friction, solver_.options().cone_generators)) ||
+        (options_.defer_repeated_failures &&
+         failures_.seen(problem_.scene, data, node.q(), node.stance(), c));
     if (deferred)
       retries_.push_back({n, c, 0, shares[i]});
     else
