@@ -1,8 +1,8 @@
 #include "planner/search/object_balance.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace stanceplan {
 namespace {

@@ -88,12 +88,8 @@ bool StanceSearch::Run::already_in_tree(const SearchNode& node) const {
 // whatever its posture (removing the contact the node itself added gives back its parent).
 bool StanceSearch::Run::removal_reaches_a_node(const SearchNode& node, const Candidate& c) const {
   if (c.add) return false;
-  const Stance& from = node.stance();
-  const Stance next = from.without(from.find(c.contact));
-  std::vector<Placement> placements;  // in the child's stance order, as make_node lists them
-  for (const Contact& kept : next.contacts())
-    placements.push_back(node.placements[size_t(from.find(kept))]);
-  return in_tree(next, placements, node.id);
+  const Stance next = node.stance().without(node.stance().find(c.contact));
+  return in_tree(next, child_placements(node, next, {}), node.id);  // a removal adds none
 }
 
 // An addition whose first attempt aims s1 (obj4's target, where s1 fits on s2 along the way:
@@ -105,20 +101,27 @@ bool StanceSearch::Run::removal_reaches_a_node(const SearchNode& node, const Can
 bool StanceSearch::Run::addition_aims_at_a_node(const SearchNode& node, const Candidate& c) const {
   if (!c.add) return false;
   const AdditionAim aim = addition_aim(node, c.contact, 0);
-  const Placement now = measure_placement(problem_.scene, c.contact, node.q());
-  Placement landing =
-      aim.placement ? *aim.placement : landing_estimate(problem_.scene, c.contact, now, aim.target);
+  Placement landing = aim.placement
+                          ? *aim.placement
+                          : landing_estimate(problem_.scene, c.contact, aim.now, aim.target);
   // A point's angle is its link's turn about s2's normal, which nothing aims (a sphere turns
   // freely): the solve keeps about the node's.
-  if (problem_.scene.surfaces.get(c.contact.s1).is_point()) landing.theta = now.theta;
-  const Stance& from = node.stance();
-  const Stance next = from.with(c.contact);
-  std::vector<Placement> placements;  // in the child's stance order, as make_node lists them
+  if (problem_.scene.surfaces.get(c.contact.s1).is_point()) landing.theta = aim.now.theta;
+  const Stance next = node.stance().with(c.contact);
+  return in_tree(next, child_placements(node, next, landing), node.id);
+}
+
+// The placements of a child `next` of `node` in its stance order, as make_node lists them: the
+// node's for the contacts it keeps, `added` for the one it adds.
+std::vector<Placement> StanceSearch::Run::child_placements(const SearchNode& node,
+                                                           const Stance& next,
+                                                           const Placement& added) const {
+  std::vector<Placement> placements;
   for (const Contact& k : next.contacts()) {
-    const int i = from.find(k);
-    placements.push_back(i >= 0 ? node.placements[size_t(i)] : landing);
+    const int i = node.stance().find(k);
+    placements.push_back(i >= 0 ? node.placements[size_t(i)] : added);
   }
-  return in_tree(next, placements, node.id);
+  return placements;
 }
 
 // Fewest contacts from the goal's stance, then the lowest cost.

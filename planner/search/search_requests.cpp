@@ -153,10 +153,10 @@ StanceSearch::Run::AdditionAim StanceSearch::Run::addition_aim(const SearchNode&
   AdditionAim out;
   // obj4 pulls the new contact towards its placement in the targeted milestone; a retry aims at a
   // point nearer the current one (a shorter step); never across another contact.
-  const Placement now = measure_placement(scene, added, node.q());
+  out.now = measure_placement(scene, added, node.q());
   const Placement aim = measure_placement(scene, added, q_ref);
-  out.target =
-      step_target(scene, node.stance(), node.placements, added, now, aim, std::pow(0.5, attempt));
+  out.target = step_target(scene, node.stance(), node.placements, added, out.now, aim,
+                           std::pow(0.5, attempt));
   // Heading for the goal (the last milestone), a goal contact with a stated placement is first
   // tried exactly there; a retry lets the solver choose.
   for (const StanceContact& g : problem_.goal_stance)

@@ -81,6 +81,8 @@ class StanceSearch::Run {
   bool already_in_tree(const SearchNode& node) const;
   bool removal_reaches_a_node(const SearchNode& node, const Candidate& c) const;
   bool addition_aims_at_a_node(const SearchNode& node, const Candidate& c) const;
+  std::vector<Placement> child_placements(const SearchNode& node, const Stance& next,
+                                          const Placement& added) const;
   int closest() const;
   void advance_milestones();
   bool skip_milestone();
@@ -100,8 +102,10 @@ class StanceSearch::Run {
   std::vector<Attempt> take_pending(int n);
   bool solves_alone(const std::deque<Attempt>& pending) const;
   // Where attempt `attempt` of adding `added` from `node` aims s1: obj4's step target, and the
-  // goal's stated placement when that attempt is made exactly there.
+  // goal's stated placement when that attempt is made exactly there; `now` is s1's placement at
+  // the node, where the step starts.
   struct AdditionAim {
+    Placement now;
     Placement target;
     std::optional<Placement> placement;
   };
