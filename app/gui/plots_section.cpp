@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "app/gui/plot_series.h"
 #include "app/gui/plot_widget.h"
@@ -156,8 +157,9 @@ std::string step_name(double x, size_t steps) {
          std::to_string(static_cast<int>(steps) - 1);
 }
 
-PlotOptions plan_options(const PanelState& state) {
+PlotOptions plan_options(const PanelState& state, std::string y_unit) {
   PlotOptions options;
+  options.y_unit = std::move(y_unit);
   options.height = remaining_height();
   options.x_name = "";  // the readout's label names the step, as the figures do
   options.marker_x = state.plan_step + state.step_fraction;  // where the timeline is
@@ -174,9 +176,8 @@ void draw_torque_plot(const PlanSeries& s, PanelState& state) {
   const std::vector<PlotTrace> traces = {
       {&s.worst_torque_ratio, status_color(NodeStatus::Goal), TraceStyle::LinesAndPoints}};
   draw_legend({}, "worst joint per step: |torque| / effort limit");
-  PlotOptions options = plan_options(state);
+  PlotOptions options = plan_options(state, "of the limit");
   options.limit_y = 1.0;  // E19: |tau| <= effort
-  options.y_unit = "of the limit";
   const PlotPick pick = draw_plot("##torque", traces, options, [&](int t, int i) {
     const PlotPoint& p = traces[t].series->points[i];
     return step_name(p.x, s.nodes.size()) + ": " + (p.note.empty() ? "no limit given" : p.note);
@@ -189,8 +190,9 @@ void draw_force_plot(const PlanSeries& s, PanelState& state) {
   for (size_t i = 0; i < s.contact_force_z.size(); ++i)
     traces.push_back({&s.contact_force_z[i], contact_color(i), TraceStyle::LinesAndPoints});
   draw_legend(traces, "vertical force (N) per step:");
-  PlotOptions options = plan_options(state);
-  options.y_unit = "N";
+  // The unit moved in by plan_options: assigning "N" to the member here trips GCC 12's
+  // -Wrestrict at -O3 (a false positive).
+  PlotOptions options = plan_options(state, "N");
   const PlotPick pick = draw_plot("##forces", traces, options, [&](int t, int i) {
     const PlotPoint& p = traces[t].series->points[i];
     return step_name(p.x, s.nodes.size()) + ": " + traces[t].series->name + " (" + p.note + ")";

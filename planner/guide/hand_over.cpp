@@ -14,6 +14,8 @@ constexpr double kMoves = 0.01;       // m: an object that moves less needs no c
 constexpr double kAntipodal = -0.99;  // cosine of the normals of two opposed facets
 constexpr int kFacetPairsTried = 2;   // per carrier, the facet pairs most across its way
 constexpr int kMaxSolves = 8;         // hand-over postures tried
+constexpr int kHoldSolves = 4;        // grasps tried per end of a carrier that may carry it alone
+constexpr int kHoldBudget = 30;       // their Ipopt iterations without progress (stall_monitor.h)
 constexpr double kAlongStep = 0.02;   // of the straight way, searched for the hand-over point
 
 // A surface's stretched chain (hand_over.h): where its first moving joint is and how far the
@@ -169,6 +171,42 @@ std::optional<HandOver> solve_hand_over(const Problem& problem, const std::vecto
   return std::nullopt;
 }
 
+// The object's contacts of a stance with anything but a carrier (its support), placements left
+// to the solver.
+std::vector<StanceContact> supports_of(const Problem& problem,
+                                       const std::vector<StanceContact>& stance, int object) {
+  std::vector<StanceContact> supports;
+  for (const StanceContact& c : stance) {
+    const int a = c.contact.s1.entity, b = c.contact.s2.entity;
+    if (a != object && b != object) continue;
+    const EntityKind other = problem.scene.system.entity(a == object ? b : a).kind;
+    if (other == EntityKind::Environment) supports.push_back({c.contact, std::nullopt, "", 0});
+  }
+  return supports;
+}
+
+// Whether carrier c can grasp the object where `q` puts it, on the supports it has there (a
+// posture solved with one of its first grasps, every contact loaded). The reach bound is
+// necessary, not sufficient: the dual arm's cylinder moved 2 cm towards arm 2 is within arm 2's
+// stretched chain at both ends, yet no grasp of arm 2 holds it on platform A.
+bool holds_at(const Problem& problem, const std::vector<ModelData>& data, const Carrier& c,
+              int object, const Eigen::VectorXd& q, const std::vector<StanceContact>& supports,
+              const GuideOptions& options) {
+  const PostureSolver solver(problem.scene, problem.solver);
+  const Eigen::Vector3d p_W =
+      q.segment<3>(problem.scene.system.offset(object) + Entity::kBasePosition);
+  int solves = 0;
+  for (const Grasp& g : grasps_of(problem, data, c, object, p_W, options, {})) {
+    if (solves++ == kHoldSolves) break;
+    std::vector<StanceContact> contacts = supports;
+    add_grasp(g, contacts);
+    PostureRequest request = problem.loaded_request(contacts, q);
+    request.progress_budget = kHoldBudget;  // a grasp out of reach stalls: stop it early
+    if (solver.solve(request).status == PostureStatus::Solved) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::optional<HandOver> find_hand_over(const Problem& problem, const Eigen::VectorXd& q_goal,
@@ -187,7 +225,15 @@ std::optional<HandOver> find_hand_over(const Problem& problem, const Eigen::Vect
     const Carrier* to = nullptr;
     bool one_carries = false;
     for (const Carrier& c : carriers) {
-      const bool starts = spare(c.reaches, p0) >= 0.0, ends = spare(c.reaches, p1) >= 0.0;
+      bool starts = spare(c.reaches, p0) >= 0.0, ends = spare(c.reaches, p1) >= 0.0;
+      if (starts && ends) {  // within the bound at both ends: does it hold the object there?
+        Eigen::VectorXd at_goal = problem.initial_configuration;  // the object as the goal has it
+        at_goal.segment<7>(at) = q_goal.segment<7>(at);
+        starts = holds_at(problem, data, c, o, problem.initial_configuration,
+                          supports_of(problem, problem.initial_stance, o), options);
+        ends = holds_at(problem, data, c, o, at_goal, supports_of(problem, problem.goal_stance, o),
+                        options);
+      }
       one_carries = one_carries || (starts && ends);
       if (starts && !from) from = &c;
       if (ends && !to) to = &c;

@@ -9,13 +9,16 @@
 // reaches a point when one of those surfaces can: the point lies within the stretched chain from
 // the first moving joint above the surface's link (the sum of the joint offsets below it, a
 // prismatic joint at its upper limit, plus the surface's farthest vertex; RBPRM's reachability
-// condition, as the search's reach rule). When no carrier reaches both the object's initial and
-// goal positions, a carrier that reaches the first hands it to one that reaches the second, at the
-// point of the straight way between them that both reach with the most to spare; the hand-over
-// posture is solved by the IK-statics program (section 4) with both carriers grasping the object,
-// every grasp contact loaded: each grasp two of the carrier's surfaces on two opposed facets of
-// the object (an antipodal grasp, E5: friction holds it), the facets whose normals lie
-// across the carrier's way to the point first.
+// condition, as the search's reach rule). That bound is necessary, not sufficient: a carrier
+// within it at both ends carries the object alone only when one of its first grasps holds the
+// object at each end, on the supports the initial and the goal stance give it (a posture solved,
+// every contact loaded). When no carrier carries it from the initial to the goal position, a
+// carrier that reaches the first hands it to one that reaches the second, at the point of the
+// straight way between them that both reach with the most to spare; the hand-over posture is solved
+// by the IK-statics program (section 4) with both carriers grasping the object, every grasp contact
+// loaded: each grasp two of the carrier's surfaces on two opposed facets of the object (an
+// antipodal grasp, E5: friction holds it), the facets whose normals lie across the carrier's way to
+// the point first.
 #include <Eigen/Core>
 #include <optional>
 #include <string>

@@ -622,7 +622,8 @@ class ScenarioReader {
                  "guide_max_checks",
                  "guide_time_limit",
                  "batch_margin",
-                 "skip_unreached_milestones"});
+                 "skip_unreached_milestones",
+                 "advance_past_milestones"});
     if (node["contact_pairs"])
       read_patterns(node["contact_pairs"], "search.contact_pairs", &s.search.contact_pairs);
     if (node["last_contacts"])
@@ -652,6 +653,9 @@ class ScenarioReader {
     if (node["defer_unbalanced_removals"])
       s.search.defer_unbalanced_removals =
           boolean(node["defer_unbalanced_removals"], "search.defer_unbalanced_removals");
+    if (node["advance_past_milestones"])
+      s.search.advance_past_milestones =
+          boolean(node["advance_past_milestones"], "search.advance_past_milestones");
     if (node["skip_unreached_milestones"])
       s.search.skip_unreached_milestones =
           boolean(node["skip_unreached_milestones"], "search.skip_unreached_milestones");

@@ -25,6 +25,16 @@ Eigen::VectorXd GuidePath::posture_near(const Eigen::VectorXd& q, int t) const {
   return out;
 }
 
+bool GuidePath::same_entries(int t, int u) const {
+  const auto mask = [&](int m) -> const Eigen::VectorXd* {
+    return m < int(masks_.size()) && masks_[size_t(m)].size() > 0 ? &masks_[size_t(m)] : nullptr;
+  };
+  const Eigen::VectorXd *a = mask(t), *b = mask(u);
+  if (a == nullptr && b == nullptr) return true;
+  if (a == nullptr || b == nullptr) return ((a ? *a : *b).array() > 0.0).all();  // none: every one
+  return ((a->array() > 0.0) == (b->array() > 0.0)).all();
+}
+
 double GuidePath::distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
                            const Eigen::VectorXd* mask) const {
   auto stated = [&](int i) { return mask == nullptr || (*mask)[i] > 0.0; };

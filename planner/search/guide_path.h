@@ -29,6 +29,8 @@ class GuidePath {
   // q with every entry milestone t states taken from it: the guide's posture near q (a coarse
   // guide states base positions only: q's posture carried to the milestone's base).
   Eigen::VectorXd posture_near(const Eigen::VectorXd& q, int t) const;
+  // Whether milestones t and u state the same entries.
+  bool same_entries(int t, int u) const;
 
  private:
   const System& system_;

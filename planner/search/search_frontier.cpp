@@ -136,13 +136,33 @@ int StanceSearch::Run::closest() const {
   return best;
 }
 
+// Milestone t is reached by a node within its tolerance, or by one that has gone past it: closer
+// to milestone t + 1 than milestone t itself is (a stride that lands beyond a coarse guide's
+// milestone leaves it behind; aimed at it still, the search would step back). Only between two
+// milestones of one kind: t with no tolerance of its own (a stated one asks for precision), t and
+// t + 1 stating the same entries and offering the same contacts (not past a heading, a posture
+// or a phase).
+bool StanceSearch::Run::reaches_milestone(const SearchNode& n, int t) const {
+  if (guide_.distance_to(n.q(), t) <= milestone_tolerance(t)) return true;
+  if (!options_.advance_past_milestones || t + 1 >= guide_.size()) return false;
+  const auto& tolerances = problem_.milestone_tolerances;
+  if (t < int(tolerances.size()) && tolerances[size_t(t)] > 0.0) return false;
+  const auto offered = [&](int m) -> const auto& {  // options_for_milestone's, without a copy
+    const auto& phases = problem_.milestone_contact_pairs;
+    return m < int(phases.size()) && !phases[size_t(m)].empty() ? phases[size_t(m)]
+                                                                : options_.contact_pairs;
+  };
+  if (!guide_.same_entries(t, t + 1) || offered(t) != offered(t + 1)) return false;
+  return guide_.distance_to(n.q(), t + 1) < guide_.distance_to(guide_.milestone(t), t + 1);
+}
+
 // Advances t past every milestone the tree already reaches; publishes each.
 void StanceSearch::Run::advance_milestones() {
   bool advanced = true;
   while (advanced && t_ + 1 < guide_.size()) {
     advanced = false;
     for (const SearchNode& n : tree_)
-      if (!n.dropped && guide_.distance_to(n.q(), t_) <= milestone_tolerance(t_)) {
+      if (!n.dropped && reaches_milestone(n, t_)) {
         ++t_;
         advanced = true;
         if (!search_.publish(node_event(SearchEventKind::Milestone, n, t_, int(tree_.size()))))

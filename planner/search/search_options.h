@@ -13,7 +13,9 @@ struct SearchOptions {
   // checks' (stance_search.h) count.
   double time_limit_s = 60.0;
   double milestone_tolerance = 0.15;  // distance at which a milestone counts as reached
-  int threads = 0;                    // candidate solves in parallel; 0 = the number of cores
+  // A milestone also counts as reached by a node closer to the next milestone than it is itself.
+  bool advance_past_milestones = true;
+  int threads = 0;  // candidate solves in parallel; 0 = the number of cores
   // Pruning (candidates.h): surfaces farther apart than this are not offered as a new contact;
   // contacts between two surfaces of one entity only when self_contacts is true.
   double contact_reach = 0.45;

@@ -75,6 +75,7 @@ class StanceSearch::Run {
                        const Stance& stance, const std::string& action,
                        std::optional<Contact> changed) const;
   double milestone_tolerance(int m) const;
+  bool reaches_milestone(const SearchNode& n, int t) const;
   double cost(const SearchNode& node) const;
   bool is_goal(const SearchNode& node) const;
   bool in_tree(const Stance& stance, const std::vector<Placement>& placements, int parent) const;

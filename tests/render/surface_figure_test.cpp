@@ -10,6 +10,7 @@
 #include "render/scene/surface_overlays.h"
 #include "tests/render/render_fixtures.h"
 #include "tests/support/cli.h"
+#include "tests/support/paths.h"
 
 namespace stanceplan::render {
 namespace {
@@ -91,8 +92,7 @@ TEST(SurfaceFigure, EachSurfaceIsTintedInItsOwnColourAndNamedInTheList) {
 }
 
 TEST(SurfaceFigure, InspectWritesThePictureOfAModelsSurfaces) {
-  const std::string png = (std::filesystem::temp_directory_path() / "sp_inspect_surfaces.png");
-  std::filesystem::remove(png);
+  const std::string png = test::temp_dir("inspect_surfaces") / "surfaces.png";
   const test::CliResult r =
       test::run_cli({"inspect", test::source_path("assets/environments/stairs/stairs.urdf"),
                      "--kind", "environment", "--surfaces", "auto", "--png", png});

@@ -39,11 +39,32 @@ inline bool shared_required() {
   return required != nullptr && std::string(required) == "1";
 }
 
+// The temporary folder of this test process, removed with everything in it when the process ends
+// (a forked child, e.g. a solver worker or a death test, has another pid and leaves it alone).
+class ProcessTempRoot {
+ public:
+  ProcessTempRoot()
+      : owner_(getpid()),
+        path_(std::filesystem::temp_directory_path() / ("stanceplan_" + std::to_string(owner_))) {}
+  ~ProcessTempRoot() {
+    if (getpid() != owner_) return;
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ProcessTempRoot(const ProcessTempRoot&) = delete;
+  ProcessTempRoot& operator=(const ProcessTempRoot&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  pid_t owner_;
+  std::filesystem::path path_;
+};
+
 // A folder of this test process's own under the system's temporary folder: CTest runs every test
 // case as a separate process, in parallel, so fixed temporary paths would race.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("stanceplan_" + std::to_string(getpid())) / name;
+  static const ProcessTempRoot root;
+  const auto dir = root.path() / name;
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -100,7 +100,9 @@ TEST(CollisionMatrix, NeverIsOptInAndOnlyTakesPairsNoSampleBroughtTogether) {
   const CollisionMatrix with_never = compute_collision_matrix(model, options);
   EXPECT_GT(with_never.count(DisabledReason::Never), 0);
   for (const MatrixPair& p : with_never.pairs)
-    if (p.reason == DisabledReason::Never) EXPECT_EQ(p.collisions, 0);
+    if (p.reason == DisabledReason::Never) {
+      EXPECT_EQ(p.collisions, 0);
+    }
   EXPECT_EQ(without_reason(named(*model, with_never), "never"), named(*model, usual));
   // The tips reach each other and the palm in some samples: never "never".
   const std::vector<Named> pairs = named(*model, with_never);
@@ -140,8 +142,10 @@ TEST(CollisionMatrix, SrdfRoundTripDisablesTheSamePairs) {
   System system;
   system.add(Entity{.name = "robot", .kind = EntityKind::FixedRobot, .model = model});
   const CollisionModel plain(system);
-  const CollisionModel with_srdf(
-      system, {.srdf_files = {{"robot", path}}, .computed_matrix = CollisionMatrixOptions{}});
+  CollisionOptions options_with_srdf;
+  options_with_srdf.srdf_files = {{"robot", path}};
+  options_with_srdf.computed_matrix = CollisionMatrixOptions{};
+  const CollisionModel with_srdf(system, options_with_srdf);
   EXPECT_EQ(with_srdf.num_srdf_disabled_pairs(), 3);
   EXPECT_TRUE(with_srdf.computed_matrices().empty());
   EXPECT_EQ(with_srdf.pairs().size() + 3, plain.pairs().size());
@@ -149,10 +153,11 @@ TEST(CollisionMatrix, SrdfRoundTripDisablesTheSamePairs) {
 
 TEST(CollisionMatrix, SceneBuilderComputesItForARobotWithoutSrdf) {
   SceneSpec spec;
-  spec.entities.push_back(
-      {.name = "robot",
-       .kind = EntityKind::FixedRobot,
-       .urdf = test::source_path("tests/data/collision_matrix/two_finger_arm.urdf")});
+  EntitySpec robot;
+  robot.name = "robot";
+  robot.kind = EntityKind::FixedRobot;
+  robot.urdf = test::source_path("tests/data/collision_matrix/two_finger_arm.urdf");
+  spec.entities.push_back(robot);
   const Scene scene = build_scene(spec);
   ASSERT_EQ(scene.collision->computed_matrices().size(), 1u);
   EXPECT_EQ(scene.collision->computed_matrices()[0].entity, 0);
@@ -191,7 +196,9 @@ void expect_sign_of_signed_distance(const std::shared_ptr<const Model>& model, i
       const double d = signed_distance(collision, work, p).distance;
       const bool fast = pair_in_collision(collision, work, data, p);
       in_collision += fast;
-      if (std::abs(d) > 1e-9) EXPECT_EQ(fast, d < 0.0) << "pair " << p << " distance " << d;
+      if (std::abs(d) > 1e-9) {
+        EXPECT_EQ(fast, d < 0.0) << "pair " << p << " distance " << d;
+      }
     }
   }
   EXPECT_GT(in_collision, 0);
@@ -245,7 +252,9 @@ TEST(CollisionMatrix, TalosContainsTheAdjacentPairsOfItsOwnSrdf) {
     const bool covered = computed.count({d.link1, d.link2}) > 0;
     ++coverage[d.reason].second;
     coverage[d.reason].first += covered;
-    if (d.reason == "Adjacent") EXPECT_TRUE(covered) << d.link1 << " / " << d.link2;
+    if (d.reason == "Adjacent") {
+      EXPECT_TRUE(covered) << d.link1 << " / " << d.link2;
+    }
   }
   EXPECT_GT(coverage["Adjacent"].second, 0);
   std::printf("talos: %s in %.1f ms; the SRDF's pairs on links with geometry covered:",

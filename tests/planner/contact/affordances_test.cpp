@@ -127,7 +127,9 @@ TEST(Affordances, AnLShapedFloorMeshGivesTwoConvexSupportsCoveringIt) {
   EXPECT_NEAR(area, 3.0, 1e-12);  // no overlap, nothing missing
   for (double x = 0.05; x < 2.0; x += 0.1)
     for (double y = 0.05; y < 2.0; y += 0.1)
-      if (x < 1.0 || y < 1.0) EXPECT_TRUE(covered(found, Vector3d(x, y, 0))) << x << " " << y;
+      if (x < 1.0 || y < 1.0) {
+        EXPECT_TRUE(covered(found, Vector3d(x, y, 0))) << x << " " << y;
+      }
 }
 
 TEST(Affordances, AFloorAroundAHoleIsCoveredByConvexPieces) {
@@ -146,8 +148,9 @@ TEST(Affordances, AFloorAroundAHoleIsCoveredByConvexPieces) {
   EXPECT_FALSE(covered(found, Vector3d(1.5, 1.5, 0)));
   for (double x = 0.05; x < 3.0; x += 0.1)
     for (double y = 0.05; y < 3.0; y += 0.1)
-      if (std::abs(x - 1.5) > 0.5 || std::abs(y - 1.5) > 0.5)
+      if (std::abs(x - 1.5) > 0.5 || std::abs(y - 1.5) > 0.5) {
         EXPECT_TRUE(covered(found, Vector3d(x, y, 0))) << x << " " << y;
+      }
 }
 
 TEST(Affordances, A45DegreeRampIsNoSupportUnderA30DegreeSlope) {

@@ -160,6 +160,15 @@ TEST_F(ScenarioFaults, SkippingUnreachedMilestonesIsOnUnlessTheFileSaysFalse) {
                                             "or false"));
 }
 
+TEST_F(ScenarioFaults, AdvancingPastMilestonesIsOnUnlessTheFileSaysFalse) {
+  EXPECT_TRUE(SearchOptions{}.advance_past_milestones);
+  write(header() + stances() + "search:\n  advance_past_milestones: false\n");
+  EXPECT_FALSE(load_scenario(path_).search.advance_past_milestones);
+  EXPECT_THAT(error_of(header() + stances() + "search:\n  advance_past_milestones: 2\n"),
+              ::testing::StartsWith(path_ + ":21: search.advance_past_milestones: expected true "
+                                            "or false"));
+}
+
 // The computed guide's budget is a whole number of validity checks; the old wall-clock field is
 // refused with the field to write instead (no number of seconds means the same on every machine).
 TEST_F(ScenarioFaults, TheGuideBudgetIsCountedInChecksNotSeconds) {

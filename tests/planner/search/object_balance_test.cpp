@@ -34,7 +34,9 @@ TEST(NonnegativeLeastSquares, MeetsTheKuhnTuckerConditions) {
     for (int j = 0; j < n; ++j) {
       EXPECT_GE(x[j], 0.0);
       EXPECT_LE(w[j], 1e-9) << trial;  // no descent direction into x_j > 0
-      if (x[j] > 0.0) EXPECT_NEAR(w[j], 0.0, 1e-9) << trial;
+      if (x[j] > 0.0) {
+        EXPECT_NEAR(w[j], 0.0, 1e-9) << trial;
+      }
     }
   }
 }

@@ -112,13 +112,16 @@ TEST_F(Walk, SamePlanBitForBitForOneAndTwoThreadsAndTwoRuns) {
 
 // A milestone no posture comes near (the waist 0.5 m higher than standing allows, on the walk's
 // third milestone): once every stance was tried, the search aims at the next milestone and finds
-// the plan, saying which one it skipped; without skipping, the search ends exhausted.
+// the plan, saying which one it skipped; without skipping, the search ends exhausted. (A node
+// past it, closer to the fourth milestone than the third is, counts as reaching it when
+// advance_past_milestones is on: the next test.)
 TEST(Search, AMilestoneOutOfReachIsSkippedOnceEveryStanceWasTried) {
   Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
   ASSERT_GE(scenario.milestones.size(), 4u);
   scenario.milestones[2][2] += 0.5;
   SearchOptions options = scenario.search;
   options.threads = 1;
+  options.advance_past_milestones = false;
   std::vector<SearchEvent> skips;
   StanceSearch search(scenario, options);
   search.set_observer([&](const SearchEvent& e) {
@@ -137,6 +140,31 @@ TEST(Search, AMilestoneOutOfReachIsSkippedOnceEveryStanceWasTried) {
   const SearchResult stuck = StanceSearch(scenario, options).run();
   EXPECT_EQ(stuck.status, PlanStatus::Exhausted) << stuck.message;
   EXPECT_EQ(stuck.milestones_skipped, 0);
+}
+
+// The same raised milestone, passed: a node that walked beyond it, closer to the fourth milestone
+// than the third milestone is, reaches it (search.advance_past_milestones), so nothing is skipped
+// and no stance has to be tried first; the walk's milestones all state the same entries.
+TEST(Search, AMilestoneANodeHasGonePastCountsAsReached) {
+  Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
+  scenario.milestones[2][2] += 0.5;
+  SearchOptions options = scenario.search;
+  options.threads = 1;
+  options.skip_unreached_milestones = false;
+  std::vector<int> reached;
+  StanceSearch search(scenario, options);
+  search.set_observer([&](const SearchEvent& e) {
+    if (e.kind == SearchEventKind::Milestone) reached.push_back(e.milestone);
+  });
+  const SearchResult result = search.run();
+  ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
+  EXPECT_EQ(result.milestones_skipped, 0);
+  ASSERT_GE(reached.size(), 3u);
+  EXPECT_EQ(reached[2], 3);  // the third milestone reached: now aiming at the fourth
+  // Its precise twin is not passed: a milestone with a tolerance of its own must be reached.
+  scenario.milestone_tolerances.assign(scenario.milestones.size(), 0.0);
+  scenario.milestone_tolerances[2] = 0.15;
+  EXPECT_EQ(StanceSearch(scenario, options).run().status, PlanStatus::Exhausted);
 }
 
 TEST(Search, AnUnreachableGoalEndsWithAReasonInsideItsBudget) {

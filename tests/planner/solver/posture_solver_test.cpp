@@ -422,8 +422,9 @@ TEST_F(HumanoidFlat, AnApproachingContactMayComeBelowTheMarginOnlyForItsOwnPair)
   ASSERT_GT(foot_to_floor(request.q_init), 0.03);
   // With the margin the foot stops above it (this solve even stalls there, at the bound).
   const PostureResult kept = solver.solve(request);
-  if (kept.status == PostureStatus::Solved)
+  if (kept.status == PostureStatus::Solved) {
     EXPECT_GE(foot_to_floor(kept.q), options.collision_margin - 1e-4);
+  }
   request.approaching = {standing_request().contacts[1].contact};
   const PostureResult down = solver.solve(request);
   ASSERT_EQ(down.status, PostureStatus::Solved) << down.message;
