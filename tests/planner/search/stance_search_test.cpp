@@ -8,6 +8,7 @@
 #include <cstring>
 #include <iostream>
 #include <thread>
+#include <vector>
 
 #include "planner/certify/certify.h"
 #include "planner/io/plan_reader.h"
@@ -115,19 +116,30 @@ TEST_F(Walk, SamePlanBitForBitForOneAndTwoThreadsAndTwoRuns) {
 // the plan, saying which one it skipped; without skipping, the search ends exhausted. (A node
 // past it, closer to the fourth milestone than the third is, counts as reaching it when
 // advance_past_milestones is on: the next test.)
-TEST(Search, AMilestoneOutOfReachIsSkippedOnceEveryStanceWasTried) {
+// The walk with its third milestone's waist raised 0.5 m, and the Milestone events of its search.
+Scenario walk_with_a_raised_milestone() {
   Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  ASSERT_GE(scenario.milestones.size(), 4u);
-  scenario.milestones[2][2] += 0.5;
-  SearchOptions options = scenario.search;
-  options.threads = 1;
-  options.advance_past_milestones = false;
-  std::vector<SearchEvent> skips;
+  scenario.milestones.at(2)[2] += 0.5;
+  scenario.search.threads = 1;
+  return scenario;
+}
+SearchResult run_noting_milestones(const Scenario& scenario, const SearchOptions& options,
+                                   std::vector<SearchEvent>* milestones) {
   StanceSearch search(scenario, options);
   search.set_observer([&](const SearchEvent& e) {
-    if (e.kind == SearchEventKind::Milestone && !e.message.empty()) skips.push_back(e);
+    if (e.kind == SearchEventKind::Milestone) milestones->push_back(e);
   });
-  const SearchResult result = search.run();
+  return search.run();
+}
+
+TEST(Search, AMilestoneOutOfReachIsSkippedOnceEveryStanceWasTried) {
+  const Scenario scenario = walk_with_a_raised_milestone();
+  ASSERT_GE(scenario.milestones.size(), 4u);
+  SearchOptions options = scenario.search;
+  options.advance_past_milestones = false;
+  std::vector<SearchEvent> skips;
+  const SearchResult result = run_noting_milestones(scenario, options, &skips);
+  std::erase_if(skips, [](const SearchEvent& e) { return e.message.empty(); });
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_EQ(result.milestones_skipped, 1);
   ASSERT_EQ(skips.size(), 1u);
@@ -146,21 +158,16 @@ TEST(Search, AMilestoneOutOfReachIsSkippedOnceEveryStanceWasTried) {
 // than the third milestone is, reaches it (search.advance_past_milestones), so nothing is skipped
 // and no stance has to be tried first; the walk's milestones all state the same entries.
 TEST(Search, AMilestoneANodeHasGonePastCountsAsReached) {
-  Scenario scenario = load_scenario(test::source_path("scenarios/humanoid_walk.yaml"));
-  scenario.milestones[2][2] += 0.5;
+  Scenario scenario = walk_with_a_raised_milestone();
   SearchOptions options = scenario.search;
-  options.threads = 1;
   options.skip_unreached_milestones = false;
-  std::vector<int> reached;
-  StanceSearch search(scenario, options);
-  search.set_observer([&](const SearchEvent& e) {
-    if (e.kind == SearchEventKind::Milestone) reached.push_back(e.milestone);
-  });
-  const SearchResult result = search.run();
+  std::vector<SearchEvent> reached;
+  const SearchResult result = run_noting_milestones(scenario, options, &reached);
   ASSERT_EQ(result.status, PlanStatus::Found) << result.message;
   EXPECT_EQ(result.milestones_skipped, 0);
   ASSERT_GE(reached.size(), 3u);
-  EXPECT_EQ(reached[2], 3);  // the third milestone reached: now aiming at the fourth
+  EXPECT_EQ(reached[2].milestone, 3);  // the third milestone reached: now aiming at the fourth
+  EXPECT_EQ(reached[2].message, "");
   // Its precise twin is not passed: a milestone with a tolerance of its own must be reached.
   scenario.milestone_tolerances.assign(scenario.milestones.size(), 0.0);
   scenario.milestone_tolerances[2] = 0.15;
