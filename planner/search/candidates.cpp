@@ -206,6 +206,17 @@ double surface_gap(const Scene& scene, const std::vector<ModelData>& data, Surfa
   return d;
 }
 
+double centre_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
+                  SurfaceRef b) {
+  if (scene.surfaces.get(a).is_point()) return surface_gap(scene, data, a, b);
+  const auto va = world_vertices(scene, data, a), vb = world_vertices(scene, data, b);
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& v : va) centre += v / double(va.size());
+  const Surface& sb = scene.surfaces.get(b);
+  const Eigen::Vector3d nb = data[b.entity].T_WL[sb.link].linear() * sb.normal_L();
+  return point_polygon_distance(centre, vb, nb);
+}
+
 std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,
                                             const Stance& stance, const Stance& goal,
                                             const SearchOptions& options, NormalAngleTable* angles,

@@ -66,6 +66,11 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
 double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
                    SurfaceRef b);
 
+// Distance from the centre of a's polygon (the mean of its vertices; a sphere: surface_gap) to b's
+// polygon in the world: how far a is from lying on b, not only from touching it.
+double centre_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
+                  SurfaceRef b);
+
 // True when a link's pose never depends on the configuration.
 bool link_is_static(const Scene& scene, int entity, int link);
 

@@ -30,10 +30,41 @@ TEST(SupportShare, ScoresTheGapAndTheNormalsAtTheGuidePosture) {
       support_share_score(scene, standing, add(scene, "robot/l_knee", "env/floor").contact);
   const Surface& s = scene.surfaces.get(test::surface(scene, "robot/l_knee"));
   double lowest = INFINITY;
-  for (const Eigen::Vector3d& v : s.vertices_L())
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& v : s.vertices_L()) {
     lowest = std::min(lowest, (standing[0].T_WL[s.link] * v).z());
-  EXPECT_NEAR(knee, lowest + kShareNormalWeight, 1e-6);
+    centre += standing[0].T_WL[s.link] * v / double(s.vertices_L().size());
+  }
+  // The floor reaches far beyond the knee: both gaps are heights above it.
+  EXPECT_NEAR(
+      knee,
+      (1 - kShareCentreWeight) * lowest + kShareCentreWeight * centre.z() + kShareNormalWeight,
+      1e-6);
   EXPECT_GT(knee, 0.4);
+}
+
+// A sole whose middle is 5 cm past a tread's far edge, its heel still on the tread: it touches
+// (surface_gap 0) but is 5 cm from lying on it (centre_gap), and scores a quarter of that.
+TEST(SupportShare, ASoleHangingOverAnEdgeScoresPartOfItsCentresDistance) {
+  const Scene scene = test::humanoid_scene("stairs");
+  Eigen::VectorXd q = test::standing_configuration(scene);
+  q[2] = 0.93 + 0.5;  // the soles at tread 5's height (x 1.55-2.15 m)
+  const SurfaceRef sole = test::surface(scene, "robot/l_sole");
+  const Surface& s = scene.surfaces.get(sole);
+  auto sole_centre_x = [&](const std::vector<ModelData>& data) {
+    double x = 0.0;
+    for (const Eigen::Vector3d& v : s.vertices_L())
+      x += (data[0].T_WL[s.link] * v).x() / double(s.vertices_L().size());
+    return x;
+  };
+  q[0] += 2.20 - sole_centre_x(system_kinematics(scene.system, q));
+  const auto data = system_kinematics(scene.system, q);
+  ASSERT_NEAR(sole_centre_x(data), 2.20, 1e-9);
+  const SurfaceRef tread = test::surface(scene, "env/tread_5");
+  EXPECT_NEAR(surface_gap(scene, data, sole, tread), 0.0, 1e-6);
+  EXPECT_NEAR(centre_gap(scene, data, sole, tread), 0.05, 1e-6);
+  EXPECT_NEAR(support_share_score(scene, data, add(scene, "robot/l_sole", "env/tread_5").contact),
+              kShareCentreWeight * 0.05, 1e-6);
 }
 
 // The guide's posture: standing with the waist above tread 5 (x 1.55-2.15 m, z = 0.5 m).
