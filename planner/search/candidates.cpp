@@ -36,6 +36,15 @@ double point_polygon_distance(const Eigen::Vector3d& p, const std::vector<Eigen:
   return d;
 }
 
+// Least distance from a vertex of either polygon to the other (0 once they touch or cross).
+double touching_gap(const std::vector<Eigen::Vector3d>& va, const std::vector<Eigen::Vector3d>& vb,
+                    const Eigen::Vector3d& na, const Eigen::Vector3d& nb) {
+  double d = INFINITY;
+  for (const auto& p : va) d = std::min(d, point_polygon_distance(p, vb, nb));
+  for (const auto& p : vb) d = std::min(d, point_polygon_distance(p, va, na));
+  return d;
+}
+
 // A floating body with mass must keep at least one contact on it (SearchOptions::min_contacts).
 bool leaves_a_body_unsupported(const Scene& scene, const Stance& stance, int removed,
                                int min_contacts) {
@@ -188,33 +197,26 @@ double surface_gap(const Scene& scene, const std::vector<ModelData>& data, Surfa
                    SurfaceRef b) {
   if (scene.surfaces.get(b).is_point() && !scene.surfaces.get(a).is_point())
     return surface_gap(scene, data, b, a);
-  if (scene.surfaces.get(a).is_point()) {  // a sphere: its centre's distance less its radius
-    const Surface& sb = scene.surfaces.get(b);
-    const Eigen::Vector3d nb = data[b.entity].T_WL[sb.link].linear() * sb.normal_L();
+  if (scene.surfaces.get(a).is_point())  // a sphere: its centre's distance less its radius
     return point_polygon_distance(world_vertices(scene, data, a)[0], world_vertices(scene, data, b),
-                                  nb) -
+                                  normal_W(scene, data, b)) -
            scene.surfaces.get(a).radius;
-  }
-  const auto va = world_vertices(scene, data, a), vb = world_vertices(scene, data, b);
-  const Surface& sa = scene.surfaces.get(a);
-  const Surface& sb = scene.surfaces.get(b);
-  const Eigen::Vector3d na = data[a.entity].T_WL[sa.link].linear() * sa.normal_L();
-  const Eigen::Vector3d nb = data[b.entity].T_WL[sb.link].linear() * sb.normal_L();
-  double d = INFINITY;
-  for (const auto& p : va) d = std::min(d, point_polygon_distance(p, vb, nb));
-  for (const auto& p : vb) d = std::min(d, point_polygon_distance(p, va, na));
-  return d;
+  return touching_gap(world_vertices(scene, data, a), world_vertices(scene, data, b),
+                      normal_W(scene, data, a), normal_W(scene, data, b));
 }
 
-double centre_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
-                  SurfaceRef b) {
-  if (scene.surfaces.get(a).is_point()) return surface_gap(scene, data, a, b);
+SurfaceGaps surface_gaps(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
+                         SurfaceRef b) {
+  if (scene.surfaces.get(a).is_point() || scene.surfaces.get(b).is_point()) {
+    const double gap = surface_gap(scene, data, a, b);  // a sphere's centre is its only point
+    return {gap, gap};
+  }
   const auto va = world_vertices(scene, data, a), vb = world_vertices(scene, data, b);
+  const Eigen::Vector3d nb = normal_W(scene, data, b);
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (const auto& v : va) centre += v / double(va.size());
-  const Surface& sb = scene.surfaces.get(b);
-  const Eigen::Vector3d nb = data[b.entity].T_WL[sb.link].linear() * sb.normal_L();
-  return point_polygon_distance(centre, vb, nb);
+  return {touching_gap(va, vb, normal_W(scene, data, a), nb),
+          point_polygon_distance(centre, vb, nb)};
 }
 
 std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vector<ModelData>& data,

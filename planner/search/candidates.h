@@ -66,10 +66,16 @@ std::vector<Candidate> enumerate_candidates(const Scene& scene, const std::vecto
 double surface_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
                    SurfaceRef b);
 
-// Distance from the centre of a's polygon (the mean of its vertices; a sphere: surface_gap) to b's
-// polygon in the world: how far a is from lying on b, not only from touching it.
-double centre_gap(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
-                  SurfaceRef b);
+// Two measures of how far surface a is from surface b, from one pass over their world polygons:
+// `touching`, surface_gap's; `centre`, from the centre of a's polygon (the mean of its vertices)
+// to b's polygon: how far a is from lying on b, not only from touching it. A sphere (either
+// surface a point): both are surface_gap.
+struct SurfaceGaps {
+  double touching = 0.0;
+  double centre = 0.0;
+};
+SurfaceGaps surface_gaps(const Scene& scene, const std::vector<ModelData>& data, SurfaceRef a,
+                         SurfaceRef b);
 
 // True when a link's pose never depends on the configuration.
 bool link_is_static(const Scene& scene, int entity, int link);

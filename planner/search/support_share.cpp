@@ -10,8 +10,8 @@ double support_share_score(const Scene& scene, const std::vector<ModelData>& gui
                            const Contact& c) {
   const Surface& s1 = scene.surfaces.get(c.s1);
   const Surface& s2 = scene.surfaces.get(c.s2);
-  const double gap = (1.0 - kShareCentreWeight) * surface_gap(scene, guide, c.s1, c.s2) +
-                     kShareCentreWeight * centre_gap(scene, guide, c.s1, c.s2);
+  const SurfaceGaps gaps = surface_gaps(scene, guide, c.s1, c.s2);
+  const double gap = (1.0 - kShareCentreWeight) * gaps.touching + kShareCentreWeight * gaps.centre;
   // A point contact has no normal of its own (a sphere): its gap alone.
   if (s1.is_point()) return gap;
   const Eigen::Vector3d n1 = guide[c.s1.entity].T_WL[s1.link].linear() * s1.normal_L();

@@ -20,18 +20,18 @@ namespace stanceplan {
 // standing), 0.4 m when they point the same way.
 constexpr double kShareNormalWeight = 0.2;
 
-// Weight of how far s1's centre is from s2's polygon (centre_gap) against the gap between the two
-// polygons (surface_gap, 0 as soon as one corner touches): a sole whose back edge just reaches a
-// platform's edge, its middle 0.12 m past it, is further from carrying its share than a palm under
-// the sole's middle. Measured on the 23 untuned, paper and guide-free runs (`plan --threads 1`):
-// 0.25 takes the guide-free climb from 22 calls and 13 steps (four of them shuffling on platform A,
-// towards a milestone over the gap) to 19 calls and 9 steps, the paper's ball from 88 to 86, the
-// other 21 unchanged; 0.1 changes nothing, 0.35 takes the guide-free stairs from 26 to 28, 1 (the
-// centre alone) to 37 and the untuned stairs from 24 to 30.
+// Weight of how far s1's centre is from s2's polygon (SurfaceGaps::centre) against the gap between
+// the two polygons (SurfaceGaps::touching, 0 as soon as one corner touches): a sole whose back edge
+// just reaches a platform's edge, its middle 0.12 m past it, is further from carrying its share
+// than a palm under the sole's middle. Measured on the 23 untuned, paper and guide-free runs (`plan
+// --threads 1`): 0.25 takes the guide-free climb from 22 calls and 13 steps (four of them shuffling
+// on platform A, towards a milestone over the gap) to 19 calls and 9 steps, the paper's ball from
+// 88 to 86, the other 21 unchanged; 0.1 changes nothing, 0.35 takes the guide-free stairs from 26
+// to 28, 1 (the centre alone) to 37 and the untuned stairs from 24 to 30.
 constexpr double kShareCentreWeight = 0.25;
 
 // How far, in metres, the guide's posture is from realising contact c: the gap between its two
-// surfaces there (surface_gap and centre_gap, weighted) plus the normals' misalignment. `guide`
+// surfaces there (surface_gaps, weighted) plus the normals' misalignment. `guide`
 // holds forward kinematics at the guide's posture. Lower is more promising.
 double support_share_score(const Scene& scene, const std::vector<ModelData>& guide,
                            const Contact& c);

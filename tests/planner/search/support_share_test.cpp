@@ -44,7 +44,7 @@ TEST(SupportShare, ScoresTheGapAndTheNormalsAtTheGuidePosture) {
 }
 
 // A sole whose middle is 5 cm past a tread's far edge, its heel still on the tread: it touches
-// (surface_gap 0) but is 5 cm from lying on it (centre_gap), and scores a quarter of that.
+// (surface_gap 0) but is 5 cm from lying on it (the centre gap), and scores a quarter of that.
 TEST(SupportShare, ASoleHangingOverAnEdgeScoresPartOfItsCentresDistance) {
   const Scene scene = test::humanoid_scene("stairs");
   Eigen::VectorXd q = test::standing_configuration(scene);
@@ -62,7 +62,9 @@ TEST(SupportShare, ASoleHangingOverAnEdgeScoresPartOfItsCentresDistance) {
   ASSERT_NEAR(sole_centre_x(data), 2.20, 1e-9);
   const SurfaceRef tread = test::surface(scene, "env/tread_5");
   EXPECT_NEAR(surface_gap(scene, data, sole, tread), 0.0, 1e-6);
-  EXPECT_NEAR(centre_gap(scene, data, sole, tread), 0.05, 1e-6);
+  const SurfaceGaps gaps = surface_gaps(scene, data, sole, tread);
+  EXPECT_NEAR(gaps.touching, 0.0, 1e-6);
+  EXPECT_NEAR(gaps.centre, 0.05, 1e-6);
   EXPECT_NEAR(support_share_score(scene, data, add(scene, "robot/l_sole", "env/tread_5").contact),
               kShareCentreWeight * 0.05, 1e-6);
 }
